@@ -1,0 +1,22 @@
+// MD — the paper's top-down midpoint displacement (§3.1) on a 2^n+1 grid.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mcmd/fill.hpp"
+
+namespace mcmd {
+
+// Visit levels coarse to fine (diamond-square: square step then diamond step)
+// and set every cell not yet fixed to the Δ-combination of its parents plus the
+// displacement d·δ (d: distance to the nearest parent relative to the top-level
+// half-spacing; δ: paper eq. 1 in units of `noise_unit`).
+// Corners that are not fixed get the mean of the fixed corners, or of all fixed
+// cells when no corner is fixed (the paper starts from given corners).
+// Pre: at least one cell fixed. Post: every cell fixed, fixed cells unchanged.
+void midpoint_displacement(Grid& grid, std::vector<std::uint8_t>& fixed, Scheme scheme,
+                           const FillParams& params, double noise_unit,
+                           const ProgressFn& progress = {});
+
+}  // namespace mcmd

@@ -1,0 +1,12 @@
+// The default method (`-method mcmd`): MCMD's bottom-up then top-down structure
+// on the same 2^n+1 hierarchy with better ingredients (see thin_plate.cpp).
+#pragma once
+
+#include "mcmd/fill.hpp"
+
+namespace mcmd {
+
+// Pre/post as mcmd::fill.
+void thin_plate_fill(Grid& grid, const FillParams& params, const ProgressFn& progress = {});
+
+}  // namespace mcmd

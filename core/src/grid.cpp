@@ -1,0 +1,21 @@
+#include "mcmd/grid.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace mcmd {
+
+Grid::Grid(int n, std::int64_t origin_x, std::int64_t origin_y)
+    : n_(n), origin_x_(origin_x), origin_y_(origin_y) {
+  if (n < 0 || n > 30) throw std::invalid_argument("grid levels must be in [0, 30]");
+  side_ = (1 << n) + 1;
+  const std::size_t cells = static_cast<std::size_t>(side_) * static_cast<std::size_t>(side_);
+  z_.assign(cells, 0.0);
+  s_.assign(cells, CellState::unknown);
+}
+
+std::size_t Grid::count(CellState s) const {
+  return static_cast<std::size_t>(std::count(s_.begin(), s_.end(), s));
+}
+
+}  // namespace mcmd
