@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "mcmd/fill.hpp"
@@ -18,5 +19,15 @@ namespace mcmd {
 void midpoint_displacement(Grid& grid, std::vector<std::uint8_t>& fixed, Scheme scheme,
                            const FillParams& params, double noise_unit,
                            const ProgressFn& progress = {});
+
+}  // namespace mcmd
+
+namespace mcmd {
+
+// Give unset roots of a hierarchy (grid corners, line ends) a start value: the
+// mean of the set roots, or of every set cell when no root is set.
+// Pre: at least one cell fixed. Post: every root fixed.
+void seed_roots(std::vector<double>& z, std::vector<std::uint8_t>& fixed,
+                std::span<const std::uint32_t> roots);
 
 }  // namespace mcmd

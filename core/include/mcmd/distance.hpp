@@ -1,0 +1,16 @@
+// Euclidean distance transform: how far each raster cell lies from the nearest
+// valid cell. Used to honour a maximum fill distance (`-md`).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace mcmd {
+
+// Distance, in cells, from every cell of a row-major w×h raster to the nearest
+// cell with valid[i] != 0 (0 for valid cells). Exact, O(w·h) (Felzenszwalb &
+// Huttenlocher 2012). Every distance is +infinity when no cell is valid.
+// Pre: w, h >= 1, valid holds w·h flags.
+std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h);
+
+}  // namespace mcmd

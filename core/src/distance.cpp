@@ -1,0 +1,66 @@
+#include "mcmd/distance.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace mcmd {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// 1D squared-distance transform of f (length n) into d: the lower envelope of
+// the parabolas (q - p)^2 + f[p]. v/z are scratch buffers of n and n+1 entries.
+void transform_1d(const double* f, double* d, int n, std::vector<int>& v, std::vector<double>& z) {
+  int k = -1;
+  for (int q = 0; q < n; ++q) {
+    if (f[q] == kInf) continue;
+    double s = 0.0;
+    while (k >= 0) {
+      const int p = v[k];
+      s = ((f[q] + double(q) * q) - (f[p] + double(p) * p)) / (2.0 * (q - p));
+      if (s > z[k]) break;
+      --k;
+    }
+    ++k;
+    v[k] = q;
+    z[k] = k == 0 ? -kInf : s;
+    z[k + 1] = kInf;
+  }
+  if (k < 0) {
+    for (int q = 0; q < n; ++q) d[q] = kInf;
+    return;
+  }
+  int j = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[j + 1] < q) ++j;
+    const double dq = q - v[j];
+    d[q] = dq * dq + f[v[j]];
+  }
+}
+
+}  // namespace
+
+std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h) {
+  const std::size_t W = static_cast<std::size_t>(w);
+  std::vector<double> sq(W * static_cast<std::size_t>(h));
+  for (std::size_t i = 0; i < sq.size(); ++i) sq[i] = valid[i] ? 0.0 : kInf;
+  const int longest = w > h ? w : h;
+  std::vector<int> v(longest);
+  std::vector<double> z(longest + 1), in(longest), out(longest);
+  for (int x = 0; x < w; ++x) {  // columns
+    for (int y = 0; y < h; ++y) in[y] = sq[y * W + x];
+    transform_1d(in.data(), out.data(), h, v, z);
+    for (int y = 0; y < h; ++y) sq[y * W + x] = out[y];
+  }
+  for (int y = 0; y < h; ++y) {  // rows
+    double* row = sq.data() + y * W;
+    for (int x = 0; x < w; ++x) in[x] = row[x];
+    transform_1d(in.data(), row, w, v, z);
+  }
+  for (double& s : sq) s = std::sqrt(s);
+  return sq;
+}
+
+}  // namespace mcmd
