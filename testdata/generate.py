@@ -108,7 +108,7 @@ def quantize(z):
 
 
 def peaks_terrain(rows, cols):
-    """Terrain for the peaks_* files, in metres (about 450..1000 m).
+    """Terrain for the peaks_* files, in metres (about 430..930 m).
 
     4 m per unit of Iizuka's height keeps the steepest flank near 60 degrees
     at 30 m cells (the paper's narrow hills get very steep if exaggerated)."""
