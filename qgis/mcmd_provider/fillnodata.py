@@ -1,0 +1,356 @@
+"""The `mcmd:fillnodata` Processing algorithm: runs the mcmd_fillnodata CLI."""
+
+import math
+import os
+
+from qgis.core import (Qgis,
+                       QgsMessageLog,
+                       QgsProcessing,
+                       QgsProcessingAlgorithm,
+                       QgsProcessingException,
+                       QgsProcessingParameterBand,
+                       QgsProcessingParameterBoolean,
+                       QgsProcessingParameterDefinition,
+                       QgsProcessingParameterEnum,
+                       QgsProcessingParameterNumber,
+                       QgsProcessingParameterRasterDestination,
+                       QgsProcessingParameterRasterLayer,
+                       QgsProcessingParameterString,
+                       QgsRasterFileWriter)
+from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtGui import QIcon
+
+from . import tool
+
+PLUGIN_DIR = os.path.dirname(os.path.abspath(__file__))
+
+# (CLI value, label) in enum order; the first is the tool's default.
+METHODS = [
+    ('mcmd', 'MCMD (improved, default)'),
+    ('paper-ds', 'Paper, diamond-square'),
+    ('paper-te', 'Paper, triangle-edge'),
+]
+
+# Numeric parameters: name, CLI flag, label, type, default (= the tool's default,
+# the flag is only passed when the value differs), min, max, advanced.
+_DOUBLE = QgsProcessingParameterNumber.Double
+_INT = QgsProcessingParameterNumber.Integer
+NUMBERS = [
+    ('MAX_DISTANCE', '-md', 'Maximum distance from known cells to fill, in pixels (0 = unlimited)',
+     _DOUBLE, 0.0, 0.0, None, False),
+    ('I', '-I', 'Top-down interpolation shape I', _DOUBLE, 0.0, -100.0, 100.0, True),
+    ('I_BU', '-Ibu', 'Bottom-up interpolation shape I_bu', _DOUBLE, 0.0, -100.0, 100.0, True),
+    ('H', '-H', 'Roughness exponent H (used when RS is not 0)', _DOUBLE, 0.5, 0.0, 1.0, True),
+    ('RT', '-rt', 'Displacement bias rt (used when RS is not 0)', _DOUBLE, 0.0, -1.0, 1.0, True),
+    ('SEED', '-seed', 'Random seed (used when RS is not 0)', _INT, 0, 0, None, True),
+    ('TILE_SIZE', '-tile', 'Tile size in pixels, 2^n+1 (0 = automatic)', _INT, 0, 0, None, True),
+    ('THREADS', '-threads', 'Number of threads (0 = the tool\'s default)', _INT, 0, 0, 1024, True),
+]
+
+HELP = """<p>Fills the nodata voids of a raster (typically a DEM) with <b>MCMD</b>, Morphologically
+Constrained Midpoint Displacement: a bottom-up pass spreads the known elevations up a nested
+subdivision hierarchy, then a top-down midpoint-displacement pass interpolates every void cell
+from its ancestors. Known cells are copied unchanged, bit for bit; only nodata cells (band nodata
+value, NaN, mask or alpha band, or the validity mask below) are written. It runs the
+<code>mcmd_fillnodata</code> command-line tool, so the result is exactly that of the tool with the
+same options; the command is shown in the log.</p>
+<h3>Parameters</h3>
+<dl>
+<dt>Input layer</dt><dd>Raster with voids. Georeferencing, CRS, nodata value, metadata and band
+descriptions are kept in the output.</dd>
+<dt>Bands</dt><dd>Bands to fill (<code>-b</code>); empty fills every band.</dd>
+<dt>Validity mask</dt><dd>Optional raster whose zero cells mark the voids to fill, instead of the
+input's own nodata/mask. <i>Do not use the default validity mask</i> treats every cell of the band
+as known except those of the mask layer.</dd>
+<dt>Method</dt><dd><b>MCMD</b> (default) keeps the paper's bottom-up-then-top-down structure with
+better ingredients (weighted bottom-up pass, cubic stencils, thin-plate relaxation): smooth fills
+without creases, continuous slopes at the void border. <b>Paper, diamond-square</b> and <b>Paper,
+triangle-edge</b> are the published algorithm exactly; they are less accurate and their
+hillshades show a lattice of dimples (diamond-square) or straight creases (triangle-edge).</dd>
+<dt>Maximum distance</dt><dd>Cells farther than this many pixels from a known cell stay nodata;
+0 fills every void whatever its size.</dd>
+<dt>I (top-down shape)</dt><dd>Shapes the distance weighting Δ used when a void cell is
+interpolated from its ancestors. 0 is a plain mean; I &gt; 0 weights near ancestors more (bell-like
+fills that hug the void border); I &lt; 0 weights far ones more (ridged, sharper fills). |I| &lt; 1,
+= 1, &gt; 1 give bell, linear, ridged profiles.</dd>
+<dt>I_bu (bottom-up shape)</dt><dd>The same weighting for the bottom-up pass that estimates coarse
+elevations inside the void from the known cells: large positive values let the nearest known
+cells dominate (features carried from the border into the void), negative values flatten.</dd>
+<dt>RS (displacement scale)</dt><dd>Amplitude of the random midpoint displacement, as a fraction
+of the known elevation range. 0 (default) gives a smooth, deterministic fill; a number such as
+0.1 adds fractal roughness; <code>auto</code> calibrates amplitude and H from the known terrain
+around each void so the fill looks as rough as its surroundings.</dd>
+<dt>H (roughness exponent)</dt><dd>Hurst-like exponent: how fast the displacement shrinks at finer
+levels. Low H (0.2) gives rough, jagged terrain; high H (0.8) smooth, rolling terrain. No effect
+when RS is 0.</dd>
+<dt>rt (displacement bias)</dt><dd>Shifts the random deviate in [-1, 1] before scaling: negative
+values carve (fills tend below the interpolated surface), positive values build up. No effect when
+RS is 0.</dd>
+<dt>Seed</dt><dd>Seed of the counter-based noise: the same seed gives the same terrain, whatever
+the tile size or number of threads. No effect when RS is 0.</dd>
+<dt>Tile size</dt><dd>Side of the square processing tiles, 2^n+1 pixels (e.g. 1025, 2049); 0
+chooses automatically. Bounds memory; the result is seamless and does not depend on it.</dd>
+<dt>Threads</dt><dd>Worker threads; 0 lets the tool decide. The result does not depend on it.</dd>
+<dt>Creation options</dt><dd>GDAL creation options of the output format, e.g.
+<code>COMPRESS=DEFLATE|TILED=YES</code>.</dd>
+<dt>Additional command-line parameters</dt><dd>Appended as is to the command line.</dd>
+</dl>
+<p>The <code>mcmd_fillnodata</code> executable is taken from Settings &gt; Options &gt; Processing
+&gt; Providers &gt; MCMD void fill, else from a <code>bin/</code> folder next to the plugin, else
+from PATH.</p>
+"""
+
+SHORT_HELP = ('Fills nodata voids of a raster (DEM) with Morphologically Constrained Midpoint '
+              'Displacement by running the mcmd_fillnodata tool. Known cells are never changed. '
+              'RS 0 gives a smooth fill, RS auto or a number adds terrain-like roughness (H, rt, '
+              'seed); I and I_bu shape how elevations are interpolated into the void.')
+
+
+class FillNodataAlgorithm(QgsProcessingAlgorithm):
+    INPUT = 'INPUT'
+    BANDS = 'BANDS'
+    MASK = 'MASK'
+    NO_MASK = 'NO_MASK'
+    METHOD = 'METHOD'
+    RS = 'RS'
+    CREATION_OPTIONS = 'CREATION_OPTIONS'
+    EXTRA = 'EXTRA'
+    OUTPUT = 'OUTPUT'
+
+    def tr(self, string):
+        return QCoreApplication.translate('FillNodataAlgorithm', string)
+
+    def createInstance(self):  # noqa: N802
+        return FillNodataAlgorithm()
+
+    def name(self):
+        return 'fillnodata'
+
+    def displayName(self):  # noqa: N802
+        return self.tr('Fill nodata (MCMD)')
+
+    def group(self):
+        return self.tr('Raster analysis')
+
+    def groupId(self):  # noqa: N802
+        return 'rasteranalysis'
+
+    def tags(self):
+        return self.tr('dem,void,nodata,fill,interpolate,midpoint,displacement,fractal,'
+                       'terrain,srtm,mcmd').split(',')
+
+    def icon(self):
+        return QIcon(os.path.join(PLUGIN_DIR, 'icon.svg'))
+
+    def svgIconPath(self):  # noqa: N802
+        return os.path.join(PLUGIN_DIR, 'icon.svg')
+
+    def shortHelpString(self):  # noqa: N802
+        return self.tr(SHORT_HELP)
+
+    def helpString(self):  # noqa: N802
+        return self.tr(HELP)
+
+    def shortDescription(self):  # noqa: N802
+        return self.tr('Fills raster nodata voids with MCMD (mcmd_fillnodata).')
+
+    def flags(self):
+        # The tool runs in its own process; nothing here touches the GUI or layers.
+        return super().flags() | QgsProcessingAlgorithm.FlagDisplayNameIsLiteral
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.addParameter(QgsProcessingParameterRasterLayer(
+            self.INPUT, self.tr('Input layer')))
+        self.addParameter(QgsProcessingParameterBand(
+            self.BANDS, self.tr('Bands to fill (empty: all bands)'), None,
+            parentLayerParameterName=self.INPUT, optional=True, allowMultiple=True))
+        self.addParameter(QgsProcessingParameterRasterLayer(
+            self.MASK, self.tr('Validity mask (0 = void to fill)'), optional=True))
+        no_mask = QgsProcessingParameterBoolean(
+            self.NO_MASK, self.tr('Do not use the default validity mask of the input'),
+            defaultValue=False)
+        no_mask.setFlags(no_mask.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
+        self.addParameter(no_mask)
+        self.addParameter(QgsProcessingParameterEnum(
+            self.METHOD, self.tr('Method'), options=[self.tr(label) for _, label in METHODS],
+            defaultValue=0))
+        for name, _flag, label, kind, default, minimum, maximum, advanced in NUMBERS:
+            param = QgsProcessingParameterNumber(name, self.tr(label), type=kind,
+                                                 defaultValue=default)
+            if minimum is not None:
+                param.setMinimum(minimum)
+            if maximum is not None:
+                param.setMaximum(maximum)
+            if advanced:
+                param.setFlags(param.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
+            self.addParameter(param)
+            if name == 'MAX_DISTANCE':
+                # RS right after the distance: the two options users change most.
+                self.addParameter(QgsProcessingParameterString(
+                    self.RS, self.tr('Displacement scale RS (0 = smooth, a number, or "auto")'),
+                    defaultValue='0'))
+        options = QgsProcessingParameterString(
+            self.CREATION_OPTIONS, self.tr('Creation options'), defaultValue='', optional=True)
+        options.setFlags(options.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
+        # The GDAL provider's creation-option editor, when the Processing plugin offers it.
+        options.setMetadata({'widget_wrapper': {
+            'class': 'processing.algs.gdal.ui.RasterOptionsWidget.RasterOptionsWidgetWrapper'}})
+        self.addParameter(options)
+        extra = QgsProcessingParameterString(
+            self.EXTRA, self.tr('Additional command-line parameters'), defaultValue=None,
+            optional=True)
+        extra.setFlags(extra.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
+        self.addParameter(extra)
+        self.addParameter(QgsProcessingParameterRasterDestination(
+            self.OUTPUT, self.tr('Filled')))
+
+    # ---- parameter checks -------------------------------------------------
+
+    @staticmethod
+    def parse_rs(text):
+        """'auto' or a finite number >= 0, as the CLI spells it; None when invalid."""
+        text = (text or '').strip()
+        if text.lower() == 'auto':
+            return 'auto'
+        if not text:
+            return '0'
+        try:
+            value = float(text)
+        except ValueError:
+            return None
+        if not math.isfinite(value) or value < 0:
+            return None
+        return text
+
+    def checkParameterValues(self, parameters, context):  # noqa: N802
+        ok, message = super().checkParameterValues(parameters, context)
+        if not ok:
+            return ok, message
+        rs = self.parameterAsString(parameters, self.RS, context)
+        if self.parse_rs(rs) is None:
+            return False, self.tr('RS must be "auto" or a number >= 0, not "{}"').format(rs)
+        tile = self.parameterAsInt(parameters, 'TILE_SIZE', context)
+        if tile and (tile < 3 or (tile - 1) & (tile - 2)):
+            return False, self.tr('Tile size must be 0 (automatic) or 2^n+1 (e.g. 257, 1025, '
+                                  '2049), not {}').format(tile)
+        return True, ''
+
+    # ---- command line -----------------------------------------------------
+
+    @staticmethod
+    def _number_text(value, kind):
+        if kind == _INT:
+            return str(int(value))
+        return repr(float(value)) if not float(value).is_integer() else str(int(value))
+
+    def build_command(self, parameters, context, feedback, executable):
+        """The argument list, like GdalAlgorithm.getConsoleCommands but as a list."""
+        layer = self.parameterAsRasterLayer(parameters, self.INPUT, context)
+        if layer is None:
+            raise QgsProcessingException(self.invalidRasterError(parameters, self.INPUT))
+        if layer.providerType() != 'gdal':
+            raise QgsProcessingException(self.tr(
+                'The input layer must be a file GDAL can read (its provider is "{}"); save it '
+                'as a GeoTIFF first.').format(layer.providerType()))
+        source = layer.source()
+
+        args = [executable]
+
+        bands = self.parameterAsInts(parameters, self.BANDS, context)
+        for band in bands:
+            if band < 1 or band > layer.bandCount():
+                raise QgsProcessingException(self.tr(
+                    'Band {} does not exist; the input has {} band(s).').format(
+                        band, layer.bandCount()))
+            args += ['-b', str(band)]
+
+        mask = self.parameterAsRasterLayer(parameters, self.MASK, context)
+        if mask is not None:
+            args += ['-mask', mask.source()]
+        if self.parameterAsBoolean(parameters, self.NO_MASK, context):
+            args.append('-nomask')
+
+        method = METHODS[self.parameterAsEnum(parameters, self.METHOD, context)][0]
+        if method != METHODS[0][0]:
+            args += ['-method', method]
+
+        for name, flag, _label, kind, default, _min, _max, _adv in NUMBERS:
+            if kind == _INT:
+                value = self.parameterAsInt(parameters, name, context)
+            else:
+                value = self.parameterAsDouble(parameters, name, context)
+            if value != default:
+                args += [flag, self._number_text(value, kind)]
+            if name == 'MAX_DISTANCE':
+                rs = self.parse_rs(self.parameterAsString(parameters, self.RS, context))
+                if rs is None:
+                    raise QgsProcessingException(self.tr('RS must be "auto" or a number >= 0'))
+                if rs == 'auto' or float(rs) != 0.0:
+                    args += ['-rs', rs]
+
+        output = self.parameterAsOutputLayer(parameters, self.OUTPUT, context)
+        if not output:
+            raise QgsProcessingException(self.tr('No output file given.'))
+        if os.path.abspath(output) == os.path.abspath(source.split('|')[0]):
+            raise QgsProcessingException(self.tr(
+                'The output must differ from the input (the input is never overwritten).'))
+        driver = QgsRasterFileWriter.driverForExtension(os.path.splitext(output)[1]) or 'GTiff'
+        args += ['-of', driver]
+
+        options = self.parameterAsString(parameters, self.CREATION_OPTIONS, context)
+        for option in (options or '').split('|'):
+            option = option.strip()
+            if option:
+                args += ['-co', option]
+
+        extra = self.parameterAsString(parameters, self.EXTRA, context)
+        if extra and extra.strip():
+            import shlex
+            args += shlex.split(extra)
+
+        args += [source, output]
+        return args, output
+
+    # ---- run --------------------------------------------------------------
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        try:
+            executable = tool.find_executable()
+        except tool.ToolError as err:
+            raise QgsProcessingException(str(err)) from err
+        args, output = self.build_command(parameters, context, feedback, executable)
+
+        command = tool.command_string(args)
+        QgsMessageLog.logMessage(command, 'Processing', Qgis.Info)
+        feedback.pushInfo(self.tr('mcmd_fillnodata command:'))
+        feedback.pushCommandInfo(command)
+        feedback.pushInfo(self.tr('mcmd_fillnodata command output:'))
+
+        out_dir = os.path.dirname(os.path.abspath(output))
+        if out_dir and not os.path.isdir(out_dir):
+            os.makedirs(out_dir, exist_ok=True)
+        before = tool.snapshot(out_dir)
+
+        def warn(line):
+            if hasattr(feedback, 'pushWarning'):
+                feedback.pushWarning(line)
+            else:  # pragma: no cover (QGIS < 3.16)
+                feedback.reportError(line, False)
+
+        try:
+            messages = tool.run(args,
+                                on_progress=feedback.setProgress,
+                                on_info=feedback.pushConsoleInfo,
+                                is_canceled=feedback.isCanceled)
+        except tool.ToolError as err:
+            removed = tool.remove_outputs(output, before)
+            for path in removed:
+                feedback.pushInfo(self.tr('Removed {}').format(path))
+            raise QgsProcessingException(str(err)) from err
+        for line in messages:
+            warn(line)
+        if not os.path.exists(output):
+            raise QgsProcessingException(self.tr(
+                'mcmd_fillnodata finished but wrote no output at {}').format(output))
+        feedback.setProgress(100)
+        return {self.OUTPUT: output}
