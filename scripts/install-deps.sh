@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Install every Debian 12 package mcmd needs to build, test and benchmark.
+set -euo pipefail
+packages=(
+  build-essential cmake git pkg-config            # C++20 toolchain (GCC 12), CMake >= 3.25
+  libgdal-dev gdal-bin python3-gdal python3-numpy  # GDAL 3.6 + PROJ 9, CLI tools, Python bindings
+  libgtest-dev googletest                          # GoogleTest for ctest
+  qgis python3-qgis qgis-providers python3-pytest  # the QGIS Processing provider and its tests
+  time zip                                         # /usr/bin/time -v for benchmarks, plugin zip
+)
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq "${packages[@]}" >/dev/null
+echo "install-deps: ${#packages[@]} packages present"
