@@ -67,6 +67,12 @@ def find_executable(setting_value=None):
             f'MCMD void fill does not exist or is not executable: {configured}')
     bundled = os.path.join(PLUGIN_DIR, 'bin', _exe_name())
     tried.append(bundled)
+    if os.path.isfile(bundled) and not os.access(bundled, os.X_OK):
+        # "Install from ZIP" extracts without the executable bit.
+        try:
+            os.chmod(bundled, os.stat(bundled).st_mode | 0o755)
+        except OSError:
+            pass
     if os.path.isfile(bundled) and os.access(bundled, os.X_OK):
         return bundled
     on_path = shutil.which(TOOL_NAME)
