@@ -1,0 +1,39 @@
+/* mcmd GDAL API: fill nodata voids of a raster band with MCMD.
+ *
+ * MCMDFillNodata() mirrors GDALFillNodata(): every cell of hTargetBand marked
+ * invalid is interpolated in place; valid cells are never written.
+ *
+ *  hTargetBand  band to fill, opened for update.
+ *  hMaskBand    validity mask (0 = void, anything else = valid), same size as
+ *               the band; NULL uses the band's own mask (nodata value, alpha
+ *               band or per-dataset mask). NaN cells of float bands are always
+ *               voids.
+ *  papszOptions NAME=VALUE options, all optional (see plugin/src/options.hpp):
+ *               METHOD=mcmd|paper-ds|paper-te, DELTA=normalized|paper,
+ *               I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT,
+ *               RS=<fraction of the known elevation range>|auto, SEED,
+ *               MAX_DISTANCE (cells, 0 = unlimited), TILE_SIZE (2^n+1, 0 = auto),
+ *               NUM_THREADS (n|ALL_CPUS). Unknown names are errors.
+ *  pfnProgress  GDAL progress callback (may be NULL); returning FALSE stops
+ *               the fill with CPLE_UserInterrupt before anything is written.
+ *
+ * Returns CE_None on success, CE_Failure (with a CPLError message) otherwise.
+ */
+#ifndef MCMD_GDAL_H_INCLUDED
+#define MCMD_GDAL_H_INCLUDED
+
+#include "gdal.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+CPLErr MCMDFillNodata(GDALRasterBandH hTargetBand, GDALRasterBandH hMaskBand,
+                      CSLConstList papszOptions, GDALProgressFunc pfnProgress,
+                      void *pProgressArg);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MCMD_GDAL_H_INCLUDED */

@@ -1,0 +1,45 @@
+// Reading a window of a band into memory: elevations and which cells are valid,
+// and writing filled void cells back. The unit a tiled pipeline will stream.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "gdal_priv.h"
+#include "pixel_type.hpp"
+
+namespace mcmd::gdal {
+
+struct Window {
+  int x = 0;
+  int y = 0;
+  int w = 0;
+  int h = 0;
+  std::size_t cells() const { return static_cast<std::size_t>(w) * static_cast<std::size_t>(h); }
+};
+
+struct WindowData {
+  Window win;
+  std::vector<double> z;            // elevations, row-major w×h
+  std::vector<std::uint8_t> valid;  // 1 = valid (known), 0 = void
+  bool voids_marked = false;        // a mask was given or a cell is not finite
+  std::size_t void_count = 0;
+};
+
+// Read `win` of `band`. A cell is void when it is not finite (NaN, ±inf) or
+// any band of `masks` is 0 there. Callers leave out masks that mark nothing
+// (a band's own mask with GMF_ALL_VALID).
+// Throws Failure on I/O errors or when a mask's size differs from the band's.
+// GDAL < 3.7 reads signed bytes (Byte + PIXELTYPE=SIGNEDBYTE) as 0..255 and its
+// nodata mask ignores a negative nodata: with `signed_nodata`, such a band is
+// read as int8 and its nodata cells are voids too.
+WindowData read_window(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
+                       const Window& win, bool signed_nodata);
+
+// Write z[i] for every cell with write[i] != 0, converted to the band's type;
+// no other cell is touched. Throws Failure on I/O errors.
+void write_cells(GDALRasterBand& band, const PixelType& type, const Window& win,
+                 const std::vector<double>& z, const std::vector<std::uint8_t>& write);
+
+}  // namespace mcmd::gdal

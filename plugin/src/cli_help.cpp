@@ -1,0 +1,86 @@
+#include "cli_help.hpp"
+
+#include "gdal.h"
+
+#ifndef MCMD_VERSION
+#define MCMD_VERSION "unknown"
+#endif
+
+namespace mcmd::cli {
+
+std::string version_text() {
+  return std::string("mcmd_fillnodata ") + MCMD_VERSION + " (GDAL " + GDALVersionInfo("RELEASE_NAME") + ")\n";
+}
+
+std::string help_text() {
+  return R"(Usage: mcmd_fillnodata [options] src_file [dst_file]
+
+Fill the nodata voids of a raster (a DEM first of all) with MCMD, Morphologically
+Constrained Midpoint Displacement. Valid cells are copied bit for bit; only void
+cells are written. Without dst_file, src_file is edited in place (as
+gdal_fillnodata does: a crash while writing may leave it partly filled).
+
+What is a void: the band's nodata value, its mask or alpha band, NaN (or
+infinite) cells of float bands, and with -mask the cells where the mask file is 0.
+
+Input and output:
+  -b band          Fill only this band (1-based, repeatable). Default: every band
+                   except alpha bands. Other bands are copied unchanged.
+  -mask file       Validity mask raster of the same size: 0 = void, anything else
+                   = valid. Its voids are added to the band's own nodata/mask.
+  -nomask          Ignore the band's own nodata value, mask and alpha band; only
+                   -mask and NaN cells then mark voids.
+  -of format       GDAL output driver (GTiff, COG, ...). Default: guessed from the
+                   dst_file extension, else GTiff. Type, size, CRS, geotransform,
+                   nodata value, metadata, colour interpretation and band
+                   descriptions are kept.
+  -co NAME=VALUE   Creation option of the output driver (repeatable), e.g.
+                   -co COMPRESS=DEFLATE.
+  -q               Quiet: print no progress.
+  --help           This text.    --version   Version of mcmd and GDAL.
+
+Shape of the fill (what it does to the terrain):
+  -method m        mcmd (default): smooth, thin-plate-like surface that follows
+                   the slopes around each void (most accurate). paper-ds /
+                   paper-te: the published MCMD method exactly, on a
+                   diamond-square or triangle-edge subdivision (for comparison).
+  -md distance     Maximum fill distance in cells: void cells farther than this
+                   from any valid cell are left as nodata. 0 (default) = fill
+                   every void, however large.
+  -I value         Shape of the top-down interpolation (paper's I, default 0):
+                   0 blends the surrounding terrain evenly; I > 0 favours nearby
+                   cells and gives rounded, bell-like fills; I < 0 favours distant
+                   cells and gives sharper, ridge-like fills. Range [-100, 100].
+  -Ibu value       The same shape for the bottom-up pass that first propagates
+                   the known elevations into the void (paper's I_bu, default 0).
+  -delta form      normalized (default): weighted mean, a fill that does not
+                   depend on the elevation datum (filling z+c gives fill+c).
+                   paper: the paper's formula, which pulls fills towards 0 m
+                   when I != 0.
+  -rs value|auto   Roughness: amplitude of the random relief added to the fill,
+                   as a FRACTION OF THE KNOWN ELEVATION RANGE of the band (0.01 on
+                   a DEM spanning 1000 m = about 10 m of relief). 0 (default) = a
+                   smooth fill. auto = amplitude and H measured from the known
+                   terrain around the voids, so the fill looks as rough as its
+                   surroundings.
+  -H value         Hurst exponent in [0, 1] (default 0.5): how the relief fades
+                   from coarse to fine scales. High H = smooth, rolling relief;
+                   low H = rugged, noisy relief. Only matters with -rs > 0.
+  -rt value        Bias of the random relief in [-1, 1] (default 0): > 0 raises,
+                   < 0 lowers the filled terrain on average. Only with -rs > 0.
+  -seed n          Seed of the random relief (default 0). The same seed gives
+                   bit-identical output; the relief at a cell depends only on
+                   (seed, cell position), not on tiling or threads.
+  -o NAME=VALUE    Any other MCMDFillNodata option, e.g. -o RIDGE_I=2.
+
+Performance (reserved for tiled processing; accepted and validated, no effect
+in this version, which fills each band in memory):
+  -tile size       Tile side in cells, 2^n+1 (e.g. 513, 1025); 0 = automatic.
+  -threads n       Worker threads, a number or ALL_CPUS (default).
+
+Example:
+  mcmd_fillnodata -of GTiff -co COMPRESS=DEFLATE dem_with_holes.tif dem_filled.tif
+)";
+}
+
+}  // namespace mcmd::cli

@@ -1,0 +1,221 @@
+#include "cli_run.hpp"
+
+#include <csignal>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cpl_string.h"
+#include "cpl_vsi.h"
+#include "errors.hpp"
+#include "fill_band.hpp"
+#include "output_file.hpp"
+
+namespace mcmd::cli {
+
+using gdal::Failure;
+
+namespace {
+
+volatile std::sig_atomic_t g_interrupted = 0;
+
+struct DatasetCloser {
+  void operator()(GDALDataset* ds) const { GDALClose(GDALDataset::ToHandle(ds)); }
+};
+using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
+
+// A slice [lo, hi] of the user's progress bar that also honours SIGINT.
+struct ProgressSlice {
+  GDALProgressFunc fn;
+  double lo;
+  double hi;
+  static int CPL_STDCALL call(double f, const char* msg, void* self) {
+    const auto* s = static_cast<const ProgressSlice*>(self);
+    if (g_interrupted) return FALSE;
+    return s->fn ? s->fn(s->lo + (s->hi - s->lo) * f, msg, nullptr) : TRUE;
+  }
+  ProgressFn as_fn() const {
+    return [this](double f) { return call(f, "", const_cast<ProgressSlice*>(this)) != FALSE; };
+  }
+};
+
+DatasetPtr open_raster(const std::string& path, bool update, const char* role) {
+  VSIStatBufL st;
+  if (VSIStatL(path.c_str(), &st) != 0)
+    throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "': no such file");
+  const unsigned flags = GDAL_OF_RASTER | (update ? GDAL_OF_UPDATE : GDAL_OF_READONLY);
+  DatasetPtr ds(GDALDataset::Open(path.c_str(), flags));
+  if (!ds)
+    throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "' as a raster" +
+                                       (update ? " for update" : "") + ": " + CPLGetLastErrorMsg());
+  if (ds->GetRasterCount() == 0)
+    throw Failure(CPLE_OpenFailed, std::string(role) + " '" + path + "' has no raster band");
+  return ds;
+}
+
+std::vector<int> select_bands(GDALDataset& ds, const std::vector<int>& wanted) {
+  const int count = ds.GetRasterCount();
+  std::vector<int> bands;
+  for (int b : wanted) {
+    if (b > count)
+      throw Failure(CPLE_IllegalArg, "band " + std::to_string(b) + " is out of range: the raster has " +
+                                         std::to_string(count) + " band(s)");
+    bands.push_back(b);
+  }
+  if (!wanted.empty()) return bands;
+  for (int b = 1; b <= count; ++b)
+    if (ds.GetRasterBand(b)->GetColorInterpretation() != GCI_AlphaBand) bands.push_back(b);
+  if (bands.empty()) throw Failure(CPLE_IllegalArg, "the raster has only alpha bands: nothing to fill");
+  return bands;
+}
+
+GDALRasterBand* open_mask(const Args& args, GDALDataset& src, DatasetPtr& holder) {
+  if (args.mask_file.empty()) return nullptr;
+  holder = open_raster(args.mask_file, false, "mask");
+  if (holder->GetRasterXSize() != src.GetRasterXSize() || holder->GetRasterYSize() != src.GetRasterYSize())
+    throw Failure(CPLE_IllegalArg, "mask '" + args.mask_file + "' is " + std::to_string(holder->GetRasterXSize()) +
+                                       "x" + std::to_string(holder->GetRasterYSize()) + " but the raster is " +
+                                       std::to_string(src.GetRasterXSize()) + "x" +
+                                       std::to_string(src.GetRasterYSize()));
+  return holder->GetRasterBand(1);
+}
+
+gdal::FillRequest request_for(GDALDataset& source, int band, GDALRasterBand* file_mask, const Args& args) {
+  gdal::FillRequest req;
+  if (file_mask) req.masks.push_back(file_mask);
+  GDALRasterBand* own = gdal::own_mask(*source.GetRasterBand(band));
+  if (own && !args.nomask) req.masks.push_back(own);
+  req.require_void_marker = true;
+  req.use_nodata = !args.nomask;
+  req.band_number = band;
+  return req;
+}
+
+// Statistics stored with the band (min, max, mean...) no longer hold once voids are filled.
+void clear_statistics(GDALRasterBand& band) {
+  CPLStringList kept;
+  bool dropped = false;
+  for (CSLConstList p = band.GetMetadata(); p && *p; ++p) {
+    if (STARTS_WITH_CI(*p, "STATISTICS_"))
+      dropped = true;
+    else
+      kept.AddString(*p);
+  }
+  if (dropped) band.SetMetadata(kept.List());
+}
+
+// Fill the selected bands of `target`; voids come from `source` (== target in place).
+void fill_bands(GDALDataset& target, GDALDataset& source, const std::vector<int>& bands, GDALRasterBand* file_mask,
+                const Args& args, const ProgressSlice& slice) {
+  CPLStringList list;
+  for (const std::string& o : args.fill_options) list.AddString(o.c_str());
+  const gdal::Options options = gdal::parse_options(list.List());
+  if (&target == &source && bands.size() > 1)  // in place: refuse before writing anything
+    for (int b : bands) gdal::check_band(*source.GetRasterBand(b), request_for(source, b, file_mask, args));
+  for (std::size_t i = 0; i < bands.size(); ++i) {
+    const gdal::FillRequest req = request_for(source, bands[i], file_mask, args);
+    const double w = (slice.hi - slice.lo) / static_cast<double>(bands.size());
+    const ProgressSlice part{slice.fn, slice.lo + w * i, slice.lo + w * (i + 1)};
+    gdal::fill_band(*target.GetRasterBand(bands[i]), req, options, part.as_fn());
+    clear_statistics(*target.GetRasterBand(bands[i]));
+  }
+}
+
+GDALDriver* driver_by_extension(const std::string& dst) {
+  const std::string ext = CPLGetExtension(dst.c_str());
+  if (ext.empty() || EQUAL(ext.c_str(), "tif") || EQUAL(ext.c_str(), "tiff"))
+    return GetGDALDriverManager()->GetDriverByName("GTiff");
+  auto* manager = GetGDALDriverManager();
+  for (int i = 0; i < manager->GetDriverCount(); ++i) {
+    GDALDriver* d = manager->GetDriver(i);
+    const char* exts = d->GetMetadataItem(GDAL_DMD_EXTENSIONS);
+    const bool writes = d->GetMetadataItem(GDAL_DCAP_CREATE) || d->GetMetadataItem(GDAL_DCAP_CREATECOPY);
+    if (!exts || !writes || !d->GetMetadataItem(GDAL_DCAP_RASTER)) continue;
+    const CPLStringList list(CSLTokenizeString(exts));
+    if (list.FindString(ext.c_str()) >= 0) return d;
+  }
+  return GetGDALDriverManager()->GetDriverByName("GTiff");
+}
+
+GDALDriver* output_driver(const Args& args) {
+  GDALDriver* d = args.format.empty() ? driver_by_extension(args.dst)
+                                      : GetGDALDriverManager()->GetDriverByName(args.format.c_str());
+  if (!d) throw Failure(CPLE_IllegalArg, "unknown output format '" + args.format + "' (see gdalinfo --formats)");
+  if (!d->GetMetadataItem(GDAL_DCAP_RASTER) ||
+      (!d->GetMetadataItem(GDAL_DCAP_CREATE) && !d->GetMetadataItem(GDAL_DCAP_CREATECOPY)))
+    throw Failure(CPLE_IllegalArg, std::string("output format '") + d->GetDescription() + "' cannot write rasters");
+  return d;
+}
+
+CPLStringList creation_options(const Args& args, GDALDriver* driver, ErrorLog& log) {
+  CPLStringList co;
+  for (const std::string& o : args.creation_options) co.AddString(o.c_str());
+  log.reset();
+  CPLErrorReset();
+  if (!GDALValidateCreationOptions(driver, co.List()))
+    throw Failure(CPLE_IllegalArg, std::string("invalid creation option for ") + driver->GetDescription() + ": " +
+                                       CPLGetLastErrorMsg());
+  return co;
+}
+
+// A MEM copy of `src`. MEM drops the IMAGE_STRUCTURE domain, so signed bytes
+// (GDAL < 3.7) are marked again for the fill and for the output driver.
+DatasetPtr work_copy(GDALDataset& src) {
+  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
+  DatasetPtr work(mem->CreateCopy("", &src, FALSE, nullptr, nullptr, nullptr));
+  if (!work) throw Failure(CPLE_OutOfMemory, std::string("cannot copy the raster to memory: ") + CPLGetLastErrorMsg());
+  for (int b = 1; b <= src.GetRasterCount(); ++b) {
+    const char* pt = src.GetRasterBand(b)->GetMetadataItem("PIXELTYPE", "IMAGE_STRUCTURE");
+    if (pt && EQUAL(pt, "SIGNEDBYTE"))
+      work->GetRasterBand(b)->SetMetadataItem("PIXELTYPE", "SIGNEDBYTE", "IMAGE_STRUCTURE");
+  }
+  return work;
+}
+
+void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
+  DatasetPtr src = open_raster(args.src, true, "raster");
+  const std::vector<int> bands = select_bands(*src, args.bands);
+  DatasetPtr mask_ds;
+  GDALRasterBand* mask = open_mask(args, *src, mask_ds);
+  log.reset();
+  fill_bands(*src, *src, bands, mask, args, ProgressSlice{progress, 0.0, 1.0});
+  src.reset();  // flush
+  if (log.failures() != 0)
+    throw Failure(CPLE_FileIO, "writing '" + args.src + "' failed (it may be partly filled): " + log.first_failure());
+}
+
+void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
+  DatasetPtr src = open_raster(args.src, false, "raster");
+  const std::vector<int> bands = select_bands(*src, args.bands);
+  DatasetPtr mask_ds;
+  GDALRasterBand* mask = open_mask(args, *src, mask_ds);
+  GDALDriver* driver = output_driver(args);
+  const CPLStringList co = creation_options(args, driver, log);
+  DatasetPtr work = work_copy(*src);
+  fill_bands(*work, *src, bands, mask, args, ProgressSlice{progress, 0.0, 0.85});
+  TempOutput out(args.dst, driver);
+  log.reset();
+  ProgressSlice write{progress, 0.85, 1.0};
+  DatasetPtr dst(driver->CreateCopy(out.path().c_str(), work.get(), FALSE, co.List(), &ProgressSlice::call, &write));
+  if (!dst) {
+    if (CPLGetLastErrorNo() == CPLE_UserInterrupt) throw Failure(CPLE_UserInterrupt, "cancelled by the user");
+    const std::string why = log.first_failure().empty() ? CPLGetLastErrorMsg() : log.first_failure();
+    throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + why);
+  }
+  dst.reset();  // close: flushes the last blocks
+  if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
+  out.commit();
+}
+
+}  // namespace
+
+void request_interrupt() { g_interrupted = 1; }
+
+void run(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
+  if (args.dst.empty())
+    run_in_place(args, log, progress);
+  else
+    run_to_copy(args, log, progress);
+}
+
+}  // namespace mcmd::cli

@@ -1,0 +1,18 @@
+// What mcmd_fillnodata does once its command line is parsed.
+#pragma once
+
+#include "cli_args.hpp"
+#include "cli_errors.hpp"
+#include "gdal.h"
+
+namespace mcmd::cli {
+
+// Fill args.src into args.dst (or in place). Progress goes to `progress`
+// (nullptr: none). Throws gdal::Failure / std::exception with a one-line
+// message on any failure, after removing any temporary output.
+void run(const Args& args, ErrorLog& log, GDALProgressFunc progress);
+
+// Set by SIGINT: the next progress report cancels the run cleanly.
+void request_interrupt();
+
+}  // namespace mcmd::cli

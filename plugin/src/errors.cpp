@@ -1,0 +1,28 @@
+#include "errors.hpp"
+
+#include <new>
+
+#include "mcmd/progress.hpp"
+#include "options.hpp"
+
+namespace mcmd::gdal {
+
+void report_current_exception() {
+  try {
+    throw;
+  } catch (const Failure& e) {
+    CPLError(CE_Failure, e.num(), "%s", e.what());
+  } catch (const Cancelled&) {
+    CPLError(CE_Failure, CPLE_UserInterrupt, "cancelled by the user");
+  } catch (const OptionError& e) {
+    CPLError(CE_Failure, CPLE_IllegalArg, "%s", e.what());
+  } catch (const std::bad_alloc&) {
+    CPLError(CE_Failure, CPLE_OutOfMemory, "out of memory: the raster is too large to fill in memory");
+  } catch (const std::exception& e) {
+    CPLError(CE_Failure, CPLE_AppDefined, "%s", e.what());
+  } catch (...) {
+    CPLError(CE_Failure, CPLE_AppDefined, "unexpected internal error");
+  }
+}
+
+}  // namespace mcmd::gdal

@@ -1,0 +1,40 @@
+// Internal errors of the GDAL glue, turned into CPLError at the C API.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "cpl_error.h"
+
+namespace mcmd::gdal {
+
+// A failure with a GDAL error number; what() is one line for the user.
+class Failure : public std::runtime_error {
+ public:
+  Failure(CPLErrorNum num, const std::string& msg) : std::runtime_error(msg), num_(num) {}
+  CPLErrorNum num() const { return num_; }
+
+ private:
+  CPLErrorNum num_;
+};
+
+// Run `body`, turning every exception into one CPLError(CE_Failure, ...).
+// Returns CE_None when body returns normally.
+template <class Body>
+CPLErr guarded(Body&& body);
+
+// Report the exception currently being handled through CPLError.
+void report_current_exception();
+
+template <class Body>
+CPLErr guarded(Body&& body) {
+  try {
+    body();
+    return CE_None;
+  } catch (...) {
+    report_current_exception();
+    return CE_Failure;
+  }
+}
+
+}  // namespace mcmd::gdal

@@ -1,0 +1,47 @@
+// mcmd_fillnodata: fill nodata voids of a raster with MCMD (gdal_fillnodata conventions).
+#include <csignal>
+#include <cstdio>
+#include <string>
+
+#include "cli_args.hpp"
+#include "cli_errors.hpp"
+#include "cli_help.hpp"
+#include "cli_run.hpp"
+#include "gdal.h"
+
+namespace {
+
+// Errors are one line: fold any newline GDAL put in a message.
+std::string one_line(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+extern "C" void on_interrupt(int) { mcmd::cli::request_interrupt(); }
+
+int fail(const std::string& msg) {
+  std::fflush(stdout);
+  std::fprintf(stderr, "%smcmd_fillnodata: error: %s\n", "", one_line(msg).c_str());
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::signal(SIGXFSZ, SIG_IGN);  // a file size limit becomes a write error, not a kill
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  GDALAllRegister();
+  mcmd::cli::ErrorLog log;
+  try {
+    const mcmd::cli::Args args = mcmd::cli::parse_args(argc, argv);
+    if (args.help) return std::fputs(mcmd::cli::help_text().c_str(), stdout) < 0;
+    if (args.version) return std::fputs(mcmd::cli::version_text().c_str(), stdout) < 0;
+    mcmd::cli::run(args, log, args.quiet ? nullptr : GDALTermProgress);
+    return 0;
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+}

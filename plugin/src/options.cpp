@@ -1,0 +1,148 @@
+#include "options.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <string>
+
+#include "cpl_string.h"
+
+namespace mcmd::gdal {
+
+namespace {
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+[[noreturn]] void fail(const std::string& name, const std::string& value, const std::string& want) {
+  throw OptionError(name + "=" + value + " is invalid: expected " + want);
+}
+
+double number(const std::string& name, const std::string& value) {
+  const char* s = value.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(s, &end);
+  if (value.empty() || end == s || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+    fail(name, value, "a number");
+  return v;
+}
+
+double number_in(const std::string& name, const std::string& value, double lo, double hi) {
+  const double v = number(name, value);
+  if (v < lo || v > hi)
+    fail(name, value, "a number in [" + CPLString().Printf("%g", lo) + ", " +
+                          CPLString().Printf("%g", hi) + "]");
+  return v;
+}
+
+std::uint64_t unsigned_integer(const std::string& name, const std::string& value) {
+  if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos)
+    fail(name, value, "a non-negative integer");
+  errno = 0;
+  const unsigned long long v = std::strtoull(value.c_str(), nullptr, 10);
+  if (errno == ERANGE) fail(name, value, "an integer below 2^64");
+  return v;
+}
+
+bool is_tile_size(std::uint64_t v) {
+  if (v < 3 || v > (1u << 15) + 1) return false;
+  const std::uint64_t p = v - 1;
+  return (p & (p - 1)) == 0;
+}
+
+Method method_of(const std::string& name, const std::string& value) {
+  const std::string v = upper(value);
+  if (v == "MCMD") return Method::mcmd;
+  if (v == "PAPER-DS" || v == "PAPER_DS") return Method::paper_ds;
+  if (v == "PAPER-TE" || v == "PAPER_TE") return Method::paper_te;
+  fail(name, value, "mcmd, paper-ds or paper-te");
+}
+
+DeltaForm delta_of(const std::string& name, const std::string& value) {
+  const std::string v = upper(value);
+  if (v == "NORMALIZED") return DeltaForm::normalized;
+  if (v == "PAPER") return DeltaForm::paper;
+  fail(name, value, "normalized or paper");
+}
+
+// |I| beyond this makes Δ a step function: surely a typo.
+constexpr double kMaxShape = 100.0;
+
+using Setter = std::function<void(Options&, const std::string& name, const std::string& value)>;
+
+Setter shape(double StateShape::*member, StateShape FillParams::*state) {
+  return [=](Options& o, const std::string& n, const std::string& v) {
+    (o.fill.*state).*member = number_in(n, v, -kMaxShape, kMaxShape);
+  };
+}
+
+const std::map<std::string, Setter>& setters() {
+  static const std::map<std::string, Setter> table = {
+      {"METHOD", [](Options& o, auto& n, auto& v) { o.fill.method = method_of(n, v); }},
+      {"DELTA", [](Options& o, auto& n, auto& v) { o.fill.delta_form = delta_of(n, v); }},
+      {"I", shape(&StateShape::I, &FillParams::known_shape)},
+      {"I_BU", shape(&StateShape::I_bu, &FillParams::known_shape)},
+      {"RIDGE_I", shape(&StateShape::I, &FillParams::ridge_shape)},
+      {"RIDGE_I_BU", shape(&StateShape::I_bu, &FillParams::ridge_shape)},
+      {"RIVER_I", shape(&StateShape::I, &FillParams::river_shape)},
+      {"RIVER_I_BU", shape(&StateShape::I_bu, &FillParams::river_shape)},
+      {"H", [](Options& o, auto& n, auto& v) { o.fill.H = number_in(n, v, 0.0, 1.0); }},
+      {"RT", [](Options& o, auto& n, auto& v) { o.fill.rt = number_in(n, v, -1.0, 1.0); }},
+      {"RS",
+       [](Options& o, auto& n, auto& v) {
+         o.fill.rs_auto = upper(v) == "AUTO";
+         if (!o.fill.rs_auto) o.fill.rs = number_in(n, v, 0.0, 10.0);
+       }},
+      {"SEED", [](Options& o, auto& n, auto& v) { o.fill.seed = unsigned_integer(n, v); }},
+      {"MAX_DISTANCE",
+       [](Options& o, auto& n, auto& v) { o.max_distance = number_in(n, v, 0.0, 1e12); }},
+      {"TILE_SIZE",
+       [](Options& o, auto& n, auto& v) {
+         const std::uint64_t t = unsigned_integer(n, v);
+         if (t != 0 && !is_tile_size(t)) fail(n, v, "0 (automatic) or 2^n+1 between 3 and 32769");
+         o.tile_size = static_cast<int>(t);
+       }},
+      {"NUM_THREADS",
+       [](Options& o, auto& n, auto& v) {
+         if (upper(v) == "ALL_CPUS") {
+           o.num_threads = 0;
+           return;
+         }
+         const std::uint64_t t = unsigned_integer(n, v);
+         if (t < 1 || t > 1024) fail(n, v, "ALL_CPUS or an integer in [1, 1024]");
+         o.num_threads = static_cast<int>(t);
+       }},
+  };
+  return table;
+}
+
+}  // namespace
+
+const char* option_names() {
+  return "METHOD, DELTA, I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT, RS, SEED, "
+         "MAX_DISTANCE, TILE_SIZE, NUM_THREADS";
+}
+
+Options parse_options(CSLConstList options) {
+  Options out;
+  for (CSLConstList p = options; p && *p; ++p) {
+    const std::string item = *p;
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw OptionError("option '" + item + "' is not of the form NAME=VALUE");
+    const std::string name = upper(item.substr(0, eq));
+    const std::string value = item.substr(eq + 1);
+    const auto it = setters().find(name);
+    if (it == setters().end())
+      throw OptionError("unknown option '" + item.substr(0, eq) + "' (known: " + option_names() + ")");
+    it->second(out, name, value);
+  }
+  return out;
+}
+
+}  // namespace mcmd::gdal

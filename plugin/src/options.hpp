@@ -1,0 +1,31 @@
+// Every MCMDFillNodata option, parsed and validated in one place.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "cpl_port.h"
+#include "mcmd/fill.hpp"
+
+namespace mcmd::gdal {
+
+// A bad option: what() is one line naming the option and the accepted values.
+class OptionError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct Options {
+  FillParams fill{};          // algorithm parameters handed to mcmd::fill
+  double max_distance = 0.0;  // cells; 0 = unlimited
+  int tile_size = 0;          // 2^n+1 cells; 0 = automatic (reserved for tiling)
+  int num_threads = 0;        // 0 = all CPUs (reserved for tiling)
+};
+
+// Parse NAME=VALUE strings (names case-insensitive). Throws OptionError.
+Options parse_options(CSLConstList options);
+
+// The accepted option names, comma separated (for messages and help).
+const char* option_names();
+
+}  // namespace mcmd::gdal
