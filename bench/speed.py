@@ -1,0 +1,422 @@
+#!/usr/bin/python3
+"""Speed and memory benchmark (issue 4, item 4): mcmd_fillnodata vs gdal_fillnodata.
+
+On ../shared/dem files with voids punched in (kept3: a random 3.3 % of cells
+kept; blobs: ~5 % of the area in blob voids), from 465x457 to the 4801^2 and
+10801x4801 mosaics, and on the real-void SRTM tiles (incl. the half-void
+3601^2 tile), runs ``mcmd_fillnodata`` with default settings, with
+``-threads 1``, and ``gdal_fillnodata.py -md <max(W,H)> -si 2`` in the same
+run (one after the other, per file). Records whole-process wall time and
+peak RSS (``/usr/bin/time -v``), RMSE against the original where there is
+one, completeness, whether known cells are bit-exact, the speed-up, and a
+hillshade PNG of the largest filled void. Also: ``-threads 1`` vs
+``-threads 2`` pixel md5 on a few files, and RMSE with ``-tile 257`` vs the
+default tile size on every blob case. Writes bench/RESULTS.md and
+bench/speed/*.png.
+
+Resumable: each (case, run) result is cached as JSON under
+bench/work/speed/results/ and redone only when the mcmd binary (or GDAL) or
+the command line changes, or with --force.
+
+    /usr/bin/python3 bench/speed.py [--mcmd build/bin/mcmd_fillnodata]
+    /usr/bin/python3 bench/speed.py --quick           # smoke run, < 1 min
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import voids as V  # noqa: E402
+
+# (DEM, void kinds), smallest first
+TRUTH_CASES = [
+    ("srtm3_zion", ("kept3", "blobs")),
+    ("nasadem3_mt_washington_513", ("kept3", "blobs")),
+    ("srtm30m_big_tujunga_utm11", ("kept3", "blobs")),
+    ("ned1_half_dome_float32", ("kept3", "blobs")),
+    ("nasadem3_N44W072_white_mountains", ("kept3", "blobs")),
+    ("ferranti3_sierra_nevada_4801", ("blobs", "kept3")),
+    ("ferranti3_california_nevada_10801x4801", ("blobs", "kept3")),
+]
+REAL_CASES = ["srtm3_N42E001_pyrenees_voids", "srtm3_N43E007_alpes_maritimes_voids",
+              "srtm1_N48W125_halfvoid_3601"]
+BIG = "ferranti3_california_nevada_10801x4801"
+MID = "ferranti3_sierra_nevada_4801"
+HALF = "srtm1_N48W125_halfvoid_3601"
+# files where -threads 2 is also run and its md5 compared with -threads 1
+DET_CASES = [f"{MID}__blobs", f"{HALF}__real"]
+
+RUNS = {            # name -> extra mcmd args (None = gdal)
+    "mcmd": [],
+    "mcmd-t1": ["-threads", "1"],
+    "gdal-si2": None,
+}
+LABEL = {"mcmd": "mcmd (default)", "mcmd-t1": "mcmd -threads 1", "gdal-si2": "gdal -si 2",
+         "mcmd-t2": "mcmd -threads 2", "mcmd-tile257": "mcmd -tile 257"}
+
+
+def log(*a):
+    print(*a, flush=True)
+
+
+def parse_args(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--mcmd", default=V.DEFAULT_MCMD,
+                    help="path to mcmd_fillnodata (default: build/bin/mcmd_fillnodata)")
+    ap.add_argument("--quick", action="store_true",
+                    help="smoke run: zion (kept3, blobs) + the alpes-maritimes tile; writes "
+                         "bench/work/RESULTS-quick.md, not bench/RESULTS.md")
+    ap.add_argument("--only", action="append", default=[],
+                    help="restrict to files whose name contains this (repeatable)")
+    ap.add_argument("--kinds", default="kept3,blobs,real",
+                    help="case kinds to run (kept3,blobs,real)")
+    ap.add_argument("--no-big-kept3", action="store_true",
+                    help="skip kept3 on the 10801x4801 mosaic")
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--timeout-gdal", type=float, default=900,
+                    help="per-run timeout for gdal_fillnodata, s (900); a timeout is "
+                         "recorded as '> N s'")
+    ap.add_argument("--timeout-mcmd", type=float, default=900,
+                    help="per-run timeout for mcmd_fillnodata, s (900)")
+    ap.add_argument("--no-extras", action="store_true",
+                    help="skip the -threads 2 md5 and -tile 257 RMSE checks")
+    ap.add_argument("--repeat", type=int, default=3,
+                    help="runs per fill on files up to 4 M cells; the median time is "
+                         "reported (3). Larger files run once.")
+    ap.add_argument("--keep", action="store_true", help="keep output rasters in the work dir")
+    ap.add_argument("--force", action="store_true", help="ignore cached results")
+    ap.add_argument("--work", default=os.path.join(V.BENCH_DIR, "work", "speed"))
+    ap.add_argument("--out", default=None, help="markdown file (default bench/RESULTS.md)")
+    ap.add_argument("--png-dir", default=None, help="PNG folder (default bench/speed)")
+    ap.add_argument("--no-png", action="store_true")
+    a = ap.parse_args(argv)
+    a.kinds = [k.strip() for k in a.kinds.split(",") if k.strip()]
+    cases = []   # (case_id, dem, kind)
+    for dem, kinds in TRUTH_CASES:
+        for k in kinds:
+            if k in a.kinds and not (dem == BIG and k == "kept3" and a.no_big_kept3):
+                cases.append((f"{dem}__{k}", dem, k))
+    if "real" in a.kinds:
+        cases += [(f"{d}__real", d, "real") for d in REAL_CASES]
+    if a.quick:
+        cases = [c for c in cases if c[1] in ("srtm3_zion", "srtm3_N43E007_alpes_maritimes_voids")]
+        a.out = a.out or os.path.join(V.BENCH_DIR, "work", "RESULTS-quick.md")
+        a.png_dir = a.png_dir or os.path.join(V.BENCH_DIR, "work", "speed-quick")
+    if a.only:
+        cases = [c for c in cases if any(o in c[0] for o in a.only)]
+    a.cases = cases
+    a.out = a.out or os.path.join(V.BENCH_DIR, "RESULTS.md")
+    a.png_dir = a.png_dir or os.path.join(V.BENCH_DIR, "speed")
+    a.mcmd = os.path.abspath(a.mcmd)
+    return a
+
+
+def main(argv=None):
+    a = parse_args(argv)
+    t_start = time.time()
+    work = a.work
+    for d in ("inputs", "out", "results"):
+        os.makedirs(os.path.join(work, d), exist_ok=True)
+    os.makedirs(a.png_dir, exist_ok=True)
+
+    ok, msg = V.mcmd_status(a.mcmd)
+    runs = dict(RUNS)
+    if not ok:
+        log("WARNING: " + msg)
+        runs = {k: v for k, v in runs.items() if v is None}
+    mcmd_key = "mcmd-" + V.binary_id(a.mcmd)
+    gkey = V.gdal_id()
+
+    results = {}   # (cid, run) -> dict
+    infos = {}
+    log(f"speed: {len(a.cases)} cases x runs {', '.join(runs)}; work in {work}")
+    for i, (cid, dem, kind) in enumerate(a.cases):
+        log(f"[{i + 1}/{len(a.cases)}] {cid}")
+        src = os.path.join(V.DEM_DIR, dem + ".tif")
+        if kind == "real":
+            inp, truth_path = src, None
+            w, h = V.raster_size(inp)
+            info = {"width": w, "height": h}
+        else:
+            inp = os.path.join(work, "inputs", f"{cid}__s{a.seed}.tif")
+            info = V.make_voided(src, inp, kind, a.seed)
+            truth_path = src
+            w, h = info["width"], info["height"]
+        inr = V.read_raster(inp)
+        removed = ~inr.valid()
+        info["void_cells"] = int(removed.sum())
+        info["void_fraction"] = info["void_cells"] / removed.size
+        truth = V.read_raster(truth_path).data if truth_path else None
+        bbox = V.largest_void_bbox(removed) if kind != "kept3" else None
+        win = V.void_window(bbox, removed.shape) if bbox else None
+        info["bbox"], info["window"] = bbox, win
+        infos[cid] = info
+        png = not a.no_png and win is not None
+        if png:
+            hill(inp, win, os.path.join(a.png_dir, f"{cid}__input"))
+
+        def evaluate(out_path, name, removed=removed, truth=truth, inr=inr, win=win, png=png,
+                     cid=cid):
+            f = V.read_raster(out_path)
+            if truth is None:
+                r = V.completeness(removed, f.data, f.nodata)
+            else:
+                r = V.metrics(truth, f.data, removed, f.nodata)
+            r["known_exact"] = V.known_unchanged(inr.data, ~removed, f.data)
+            del f
+            r["md5"] = V.pixel_md5(out_path) if name.startswith("mcmd") else None
+            if png and name in ("mcmd", "gdal-si2", "mcmd-tile257"):
+                hill(out_path, win, os.path.join(a.png_dir, f"{cid}__{name}"))
+            if not a.keep:
+                os.unlink(out_path)
+            return r
+
+        todo = list(runs.items())
+        if ok and not a.no_extras:
+            if cid in [d for d in DET_CASES] or (a.quick and kind == "blobs"):
+                todo.append(("mcmd-t2", ["-threads", "2"]))
+            if kind == "blobs":
+                todo.append(("mcmd-tile257", ["-tile", "257"]))
+        for name, extra in todo:
+            out = os.path.join(work, "out", f"{cid}__{name}.tif")
+            if extra is None:
+                cmd = V.fill_cmd("gdal-si2", inp, out, max(w, h), a.mcmd)
+                key, tmo = gkey, a.timeout_gdal
+            else:
+                cmd = [a.mcmd, "-q"] + extra + [inp, out]
+                key, tmo = mcmd_key, a.timeout_mcmd
+            res = os.path.join(work, "results", f"{cid}__{name}.json")
+            results[(cid, name)] = V.cached_fill(
+                res, cmd, key, out, tmo, lambda p, n=name: evaluate(p, n),
+                force=a.force, log=log, repeat=a.repeat if w * h <= 4_000_000 else 1)
+            if not a.keep and os.path.exists(out):
+                os.unlink(out)   # failed runs may leave partial files
+    write_report(a, runs, results, infos, None if ok else msg, time.time() - t_start)
+    log(f"wrote {a.out}")
+    return 0
+
+
+def hill(src, win, stem):
+    """Overview PNG of the window; for a window larger than 256² also a
+    full-resolution 256² detail PNG at the void's centre."""
+    main, detail = win
+    try:
+        V.hillshade_png(src, main, stem + ".png")
+        if detail:
+            V.hillshade_png(src, detail, stem + "__detail.png")
+    except Exception as e:  # noqa: BLE001
+        log(f"  hillshade failed for {src}: {e}")
+
+
+# --------------------------------------------------------------------------
+# report
+# --------------------------------------------------------------------------
+
+def t_str(r):
+    if not r:
+        return "not run"
+    if r.get("timed_out"):
+        return f"timeout > {r['timeout_s']:.0f} s"
+    if not r.get("ok"):
+        return r.get("error", "failed").replace("|", "/")[:60]
+    return f"{r['wall_s']:.2f}"
+
+
+def speedup(r, g):
+    if not r or not r.get("ok") or not g:
+        return None
+    if g.get("timed_out"):
+        return f"> {g['timeout_s'] / r['wall_s']:.1f}×"
+    if not g.get("ok"):
+        return None
+    return f"{g['wall_s'] / max(r['wall_s'], 1e-3):.2f}×"
+
+
+def write_report(a, runs, results, infos, mcmd_msg, elapsed):
+    md_dir = os.path.dirname(os.path.abspath(a.out))
+    rel = lambda p: os.path.relpath(p, md_dir)  # noqa: E731
+    L = ["# Speed and memory: mcmd_fillnodata vs gdal_fillnodata"
+         + (" (QUICK smoke run)" if a.quick else ""), ""]
+    L.append(f"Generated {time.strftime('%Y-%m-%d %H:%M %Z')} on {V.machine_info()}; "
+             f"commit {V.git_rev()}; mcmd binary `{os.path.relpath(a.mcmd, V.ROOT_DIR)}` "
+             f"(sha256 {V.binary_id(a.mcmd)}); this invocation took {elapsed:.0f} s "
+             "(cached results reused where the binary and command were unchanged).")
+    L.append("")
+    L.append("Regenerate: `bench/run_speed.sh` (options: `--quick`, `--only NAME`, "
+             "`--timeout-gdal S`, `--force`; see bench/README.md).")
+    L.append("")
+    if mcmd_msg:
+        L.append(f"**mcmd runs not done:** {mcmd_msg.splitlines()[0]}")
+        L.append("")
+    L.append("Each file is filled by `mcmd_fillnodata` (default settings; all cores), by "
+             "`mcmd_fillnodata -threads 1`, and by `gdal_fillnodata.py -md max(W,H) -si 2`, "
+             "one after the other in the same run. **time** = whole-process wall time and "
+             "**RSS** = peak resident set size, both from `/usr/bin/time -v` (file I/O and "
+             "interpreter start-up included). **speed-up** = GDAL time ÷ mcmd time. RMSE is over "
+             "the removed cells against the original (void-free DEMs with voids punched in: "
+             f"kept3 = a random 3.3 % of cells kept; blobs = ~5 % of the area; seed {a.seed}). "
+             "Real-void tiles have no truth: completeness only.")
+    L.append("")
+    L.append("| case | size | void % | mcmd s | mcmd MB | -threads 1 s | -threads 1 MB | gdal s "
+             "| gdal MB | speed-up | speed-up (1 thread) | RMSE mcmd | RMSE gdal | RMSE ratio "
+             "| filled % mcmd / gdal | known cells exact |")
+    L.append("|" + "---|" * 16)
+    for cid, dem, kind in a.cases:
+        info = infos.get(cid, {})
+        m, t1, g = (results.get((cid, k)) for k in ("mcmd", "mcmd-t1", "gdal-si2"))
+
+        def mb(r):
+            return V.fmt(r.get("rss_mb"), ".0f") if r and r.get("ok") else "—"
+
+        def rm(r):
+            return V.fmt(r.get("rmse"), ".2f") if r and r.get("ok") else "—"
+
+        def comp(r):
+            return V.fmt(100 * r["completeness"], ".2f") if r and r.get("ok") and \
+                r.get("completeness") is not None else "—"
+        rr = None
+        if m and g and m.get("ok") and g.get("ok") and m.get("rmse") and g.get("rmse"):
+            rr = m["rmse"] / g["rmse"]
+        exact = [r.get("known_exact") for r in (m, t1, g) if r and r.get("ok")]
+        ex = "—" if not exact else ("yes" if all(exact) else "NO")
+        L.append("| " + " | ".join([
+            f"{dem} {kind}", f"{info.get('width')}×{info.get('height')}",
+            V.fmt(100 * info.get("void_fraction", float("nan")), ".1f"),
+            t_str(m), mb(m), t_str(t1), mb(t1), t_str(g), mb(g),
+            speedup(m, g) or "—", speedup(t1, g) or "—",
+            rm(m), rm(g), V.fmt(rr, ".3f"), f"{comp(m)} / {comp(g)}", ex]) + " |")
+    L.append("")
+
+    # extras
+    det = [(cid, results.get((cid, "mcmd-t1")), results.get((cid, "mcmd-t2")),
+            results.get((cid, "mcmd"))) for cid, _, _ in a.cases
+           if results.get((cid, "mcmd-t2"))]
+    if det:
+        L.append("## Determinism: `-threads 1` vs `-threads 2` (md5 of the pixel data)")
+        L.append("")
+        L.append("| case | -threads 1 | -threads 2 | default | identical |")
+        L.append("|---|---|---|---|---|")
+        for cid, r1, r2, rd in det:
+            md = [r.get("md5") if r and r.get("ok") else None for r in (r1, r2, rd)]
+            same = md[0] is not None and md[0] == md[1]
+            L.append(f"| {cid} | `{md[0]}` | `{md[1]}` | `{md[2]}` | "
+                     f"{'yes' if same else 'NO'} |")
+        L.append("")
+    tile = [(cid, results.get((cid, "mcmd")), results.get((cid, "mcmd-tile257")))
+            for cid, _, _ in a.cases if results.get((cid, "mcmd-tile257"))]
+    if tile:
+        L.append("## Tile size: `-tile 257` vs default, blob voids (RMSE over removed cells)")
+        L.append("")
+        L.append("| case | RMSE default | RMSE -tile 257 | ratio | time default s | time -tile 257 s "
+                 "| RSS default MB | RSS -tile 257 MB |")
+        L.append("|---|---|---|---|---|---|---|---|")
+        for cid, rd, rt in tile:
+            ok = rd and rt and rd.get("ok") and rt.get("ok") and rd.get("rmse")
+            L.append("| " + " | ".join([
+                cid, V.fmt(rd.get("rmse") if rd else None, ".3f"),
+                V.fmt(rt.get("rmse") if rt else None, ".3f"),
+                V.fmt(rt["rmse"] / rd["rmse"] if ok else None, ".4f"),
+                t_str(rd), t_str(rt),
+                V.fmt(rd.get("rss_mb") if rd else None, ".0f"),
+                V.fmt(rt.get("rss_mb") if rt else None, ".0f")]) + " |")
+        L.append("")
+
+    chk = done_checks(a, results, tile, det)
+    if chk:
+        L.append("## Issue 4 \"done when\" checks (automatic)")
+        L.append("")
+        L.append("| check | value | target | pass |")
+        L.append("|---|---|---|---|")
+        L.extend(chk)
+        L.append("")
+
+    if not a.no_png:
+        L.append("## Hillshades of the largest filled void")
+        L.append("")
+        L.append("gdaldem hillshade of a window around the largest void (≤ 256² PNG; larger "
+                 "windows are averaged down, with a full-resolution 256² detail at the void's "
+                 "centre). Black = nodata.")
+        L.append("")
+        for cid, dem, kind in a.cases:
+            panels = []
+            for name in ("input", "mcmd", "gdal-si2", "mcmd-tile257"):
+                for suf in ("", "__detail"):
+                    p = os.path.join(a.png_dir, f"{cid}__{name}{suf}.png")
+                    if os.path.exists(p):
+                        panels.append((LABEL.get(name, name) + (" (detail)" if suf else ""), p))
+            if not panels:
+                continue
+            info = infos.get(cid, {})
+            L.append(f"**{cid}** — largest void bbox {info.get('bbox')}")
+            L.append("")
+            L.append("| " + " | ".join(lbl for lbl, _ in panels) + " |")
+            L.append("|" + "---|" * len(panels))
+            L.append("| " + " | ".join(f"![{lbl}]({rel(p)})" for lbl, p in panels) + " |")
+            L.append("")
+
+    L.append("## All runs")
+    L.append("")
+    L.append("| case | run | status | wall s | user s | sys s | RSS MB | RMSE | max err | filled % |")
+    L.append("|---|---|---|---|---|---|---|---|---|---|")
+    for cid, _, _ in a.cases:
+        for name in ("mcmd", "mcmd-t1", "mcmd-t2", "mcmd-tile257", "gdal-si2"):
+            r = results.get((cid, name))
+            if not r:
+                continue
+            st = "ok" if r.get("ok") else r.get("error", "failed").replace("|", "/")[:80]
+            comp = r.get("completeness")
+            L.append("| " + " | ".join([
+                cid, LABEL[name], st, V.fmt(r.get("wall_s"), ".2f"), V.fmt(r.get("user_s"), ".2f"),
+                V.fmt(r.get("sys_s"), ".2f"), V.fmt(r.get("rss_mb"), ".0f"),
+                V.fmt(r.get("rmse"), ".3f"), V.fmt(r.get("max_err"), ".1f"),
+                V.fmt(100 * comp if comp is not None else None, ".2f")]) + " |")
+    L.append("")
+    with open(a.out, "w") as f:
+        f.write("\n".join(L))
+
+
+def done_checks(a, results, tile, det):
+    rows = []
+
+    def row(name, val, target, ok):
+        rows.append(f"| {name} | {val} | {target} | {'yes' if ok else 'NO'} |")
+
+    big = results.get((f"{BIG}__blobs", "mcmd"))
+    gbig = results.get((f"{BIG}__blobs", "gdal-si2"))
+    mid = results.get((f"{MID}__blobs", "mcmd"))
+    if big and big.get("ok"):
+        c = big.get("completeness", 0)
+        row("10801×4801 blobs: filled completely", f"{100 * c:.3f} %", "100 %", c == 1.0)
+        row("10801×4801 blobs: valid cells bit-exact", str(big.get("known_exact")), "True",
+            bool(big.get("known_exact")))
+        if gbig and (gbig.get("ok") or gbig.get("timed_out")):
+            s = (gbig["timeout_s"] if gbig.get("timed_out") else gbig["wall_s"]) / big["wall_s"]
+            pre = "> " if gbig.get("timed_out") else ""
+            row("10801×4801 blobs: speed-up vs GDAL", f"{pre}{s:.1f}×", "≥ 10×", s >= 10)
+        row("10801×4801 blobs: peak RSS", f"{big['rss_mb']:.0f} MB", "< 512 MB",
+            big["rss_mb"] < 512)
+        if mid and mid.get("ok"):
+            q = big["rss_mb"] / mid["rss_mb"]
+            row("peak RSS 10801×4801 ÷ 4801²", f"{q:.2f}", "≤ 1.25", q <= 1.25)
+    hv = results.get((f"{HALF}__real", "mcmd"))
+    if hv and hv.get("ok"):
+        c = hv.get("completeness", 0)
+        row("half-void 3601² filled completely", f"{100 * c:.3f} %", "100 %", c == 1.0)
+    for cid, rd, rt in tile:
+        if rd and rt and rd.get("ok") and rt.get("ok") and rd.get("rmse"):
+            q = rt["rmse"] / rd["rmse"]
+            row(f"-tile 257 vs default RMSE, {cid}", f"{q:.4f}", "within 3 %", abs(q - 1) <= 0.03)
+    for cid, r1, r2, _ in det:
+        if r1 and r2 and r1.get("ok") and r2.get("ok"):
+            row(f"-threads 1 == -threads 2, {cid}", "identical" if r1["md5"] == r2["md5"]
+                else "differ", "identical", r1["md5"] == r2["md5"])
+    return rows
+
+
+if __name__ == "__main__":
+    sys.exit(main())

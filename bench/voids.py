@@ -1,0 +1,730 @@
+"""Shared helpers for the mcmd benchmarks (bench/accuracy.py, bench/speed.py).
+
+Everything that both benchmarks need lives here, in one place:
+
+* punching voids into a void-free DEM, deterministically from a seed
+  - ``kept3``: keep a random 3.3 % of the cells, the rest becomes nodata
+    (the MCMD paper's experiment);
+  - ``blobs``: a union of smooth random star-shaped blobs of mixed sizes
+    (one large one) covering ~5 % of the area, most of them away from the
+    raster border;
+* writing the voided GeoTIFF (same data type, CRS, geotransform, nodata;
+  a nodata value is declared when the source has none);
+* metrics inside the removed cells against the original: RMSE, max abs
+  error, Laplacian-spread ratio, mean-slope ratio, completeness;
+* running a command under ``/usr/bin/time -v`` (wall time, peak RSS) with a
+  timeout;
+* hillshade PNGs (gdaldem hillshade) of a window around the largest void.
+
+Run with /usr/bin/python3 (needs numpy and osgeo.gdal; nothing else).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import os
+import platform
+import re
+import signal
+import subprocess
+import tempfile
+import time
+from dataclasses import dataclass
+
+import numpy as np
+from osgeo import gdal, ogr, osr
+
+gdal.UseExceptions()
+
+BENCH_DIR = os.path.dirname(os.path.abspath(__file__))
+ROOT_DIR = os.path.dirname(BENCH_DIR)
+DEM_DIR = os.path.normpath(os.path.join(ROOT_DIR, "..", "shared", "dem"))
+DEFAULT_MCMD = os.path.join(ROOT_DIR, "build", "bin", "mcmd_fillnodata")
+GDAL_FILL = "gdal_fillnodata.py"
+
+KEPT_FRACTION = 0.033
+BLOB_COVER = 0.05
+PNG_MAX = 256
+
+VOID_KINDS = ("kept3", "blobs")
+
+
+# --------------------------------------------------------------------------
+# raster I/O
+# --------------------------------------------------------------------------
+
+@dataclass
+class Raster:
+    data: np.ndarray          # native dtype, 2-D
+    nodata: float | None      # declared nodata (None if the file has none)
+    gt: tuple
+    wkt: str
+    gdal_type: int
+
+    @property
+    def shape(self):
+        return self.data.shape
+
+    def valid(self) -> np.ndarray:
+        return valid_mask(self.data, self.nodata)
+
+
+def valid_mask(a: np.ndarray, nodata) -> np.ndarray:
+    m = np.ones(a.shape, dtype=bool)
+    if np.issubdtype(a.dtype, np.floating):
+        m &= ~np.isnan(a)
+    if nodata is not None and not (isinstance(nodata, float) and math.isnan(nodata)):
+        m &= a != np.asarray(nodata).astype(a.dtype)
+    return m
+
+
+def read_raster(path: str, band: int = 1) -> Raster:
+    ds = gdal.Open(path)
+    b = ds.GetRasterBand(band)
+    return Raster(b.ReadAsArray(), b.GetNoDataValue(), ds.GetGeoTransform(),
+                  ds.GetProjection(), b.DataType)
+
+
+def raster_size(path: str) -> tuple[int, int]:
+    ds = gdal.Open(path)
+    return ds.RasterXSize, ds.RasterYSize
+
+
+def is_geographic(path: str) -> bool:
+    ds = gdal.Open(path)
+    wkt = ds.GetProjection()
+    if not wkt:
+        return False
+    srs = osr.SpatialReference()
+    srs.ImportFromWkt(wkt)
+    return bool(srs.IsGeographic())
+
+
+def choose_nodata(data: np.ndarray) -> float:
+    """A nodata value for a file that declares none, absent from the data."""
+    if np.issubdtype(data.dtype, np.floating):
+        for v in (-9999.0, -32768.0, -1e30):
+            if not np.any(data == v):
+                return v
+        return float("nan")
+    info = np.iinfo(data.dtype)
+    for v in (info.min, info.max, 0):
+        if not np.any(data == v):
+            return float(v)
+    raise ValueError("no free value for nodata")
+
+
+def write_voided(src_path: str, dst_path: str, void: np.ndarray,
+                 src: Raster | None = None) -> float:
+    """Copy ``src_path`` to ``dst_path`` (GTiff, same type/CRS/geotransform)
+    with the cells in ``void`` set to nodata. Returns the nodata value used."""
+    src = src or read_raster(src_path)
+    nodata = src.nodata if src.nodata is not None else choose_nodata(src.data)
+    out = src.data.copy()
+    out[void] = np.asarray(nodata).astype(out.dtype)
+    h, w = out.shape
+    tmp = dst_path + ".part.tif"
+    drv = gdal.GetDriverByName("GTiff")
+    ds = drv.Create(tmp, w, h, 1, src.gdal_type,
+                    options=["TILED=YES", "BLOCKXSIZE=256", "BLOCKYSIZE=256",
+                             "COMPRESS=LZW", "BIGTIFF=IF_SAFER"])
+    ds.SetGeoTransform(src.gt)
+    if src.wkt:
+        ds.SetProjection(src.wkt)
+    b = ds.GetRasterBand(1)
+    b.SetNoDataValue(nodata)
+    b.WriteArray(out)
+    b = None
+    ds = None
+    os.replace(tmp, dst_path)
+    return nodata
+
+
+def crop_to(src_path: str, dst_path: str, xoff: int, yoff: int, w: int, h: int):
+    """Crop a window of a DEM into a new GTiff (used to add extra void-free
+    test DEMs cut out of the big mosaics)."""
+    if os.path.exists(dst_path):
+        return
+    tmp = dst_path + ".part.tif"
+    gdal.Translate(tmp, src_path, srcWin=[xoff, yoff, w, h],
+                   creationOptions=["TILED=YES", "COMPRESS=LZW"])
+    os.replace(tmp, dst_path)
+
+
+# --------------------------------------------------------------------------
+# void punching
+# --------------------------------------------------------------------------
+
+def _rng(seed: int, kind: str) -> np.random.Generator:
+    # independent streams per void kind, stable across numpy versions
+    salt = int.from_bytes(hashlib.sha256(kind.encode()).digest()[:4], "little")
+    return np.random.Generator(np.random.PCG64([seed, salt]))
+
+
+def punch_kept3(shape, seed: int, frac: float = KEPT_FRACTION) -> np.ndarray:
+    """Void mask (True = removed) keeping a random ``frac`` of the cells."""
+    rng = _rng(seed, "kept3")
+    h, w = shape
+    void = np.empty(shape, dtype=bool)
+    # row chunks keep the temporary small on the 52 M-cell mosaic
+    step = max(1, (1 << 22) // max(w, 1))
+    for y0 in range(0, h, step):
+        y1 = min(h, y0 + step)
+        void[y0:y1] = rng.random((y1 - y0, w), dtype=np.float32) >= frac
+    return void
+
+
+def _blob(rng, r: float):
+    """A smooth star-shaped blob: radius(theta) = r * (1 + sum a_k cos(k theta + phi_k))."""
+    ks = np.arange(2, 7)
+    amp = rng.uniform(0.0, 0.35, size=ks.size) / ks ** 0.8
+    phase = rng.uniform(0, 2 * np.pi, size=ks.size)
+    # anisotropic stretch and rotation
+    stretch = rng.uniform(0.6, 1.0)
+    rot = rng.uniform(0, np.pi)
+    rmax = r * (1 + amp.sum())
+    return ks, amp, phase, stretch, rot, rmax
+
+
+def _raster_blob(void, cx, cy, r, params):
+    ks, amp, phase, stretch, rot, rmax = params
+    h, w = void.shape
+    x0, x1 = max(0, int(cx - rmax) - 1), min(w, int(cx + rmax) + 2)
+    y0, y1 = max(0, int(cy - rmax) - 1), min(h, int(cy + rmax) + 2)
+    if x0 >= x1 or y0 >= y1:
+        return
+    yy, xx = np.mgrid[y0:y1, x0:x1].astype(np.float64)
+    dx, dy = xx - cx, yy - cy
+    c, s = math.cos(rot), math.sin(rot)
+    u = c * dx + s * dy
+    v = (-s * dx + c * dy) / stretch
+    rho = np.hypot(u, v)
+    th = np.arctan2(v, u)
+    rad = r * (1 + (amp[:, None, None] * np.cos(ks[:, None, None] * th + phase[:, None, None])).sum(0))
+    void[y0:y1, x0:x1] |= rho <= rad
+
+
+def punch_blobs(shape, seed: int, cover: float = BLOB_COVER,
+                valid: np.ndarray | None = None) -> np.ndarray:
+    """Void mask (True = removed): union of smooth random blobs of mixed sizes
+    covering ~``cover`` of the area. One large blob (~1/3 of the cover) sits
+    well inside the raster; ~85 % of the others are kept clear of the border,
+    the rest are centred near a raster edge (voids touching the border)."""
+    rng = _rng(seed, "blobs")
+    h, w = shape
+    area = float(h * w)
+    void = np.zeros(shape, dtype=bool)
+    target = cover * area
+
+    # the large one
+    r_big = math.sqrt(target / 3.0 / math.pi)
+    r_big = min(r_big, 0.3 * min(h, w))
+    p = _blob(rng, r_big)
+    m = p[5] + 2
+    cx = rng.uniform(min(m, w / 2), max(w - m, w / 2))
+    cy = rng.uniform(min(m, h / 2), max(h - m, h / 2))
+    _raster_blob(void, cx, cy, r_big, p)
+
+    r_min = 1.5
+    r_max = max(r_min * 2, r_big / 3.0)
+    count = int(void.sum())
+    n = 0
+    while count < target and n < 100000:
+        n += 1
+        r = math.exp(rng.uniform(math.log(r_min), math.log(r_max)))
+        p = _blob(rng, r)
+        if rng.random() < 0.85:
+            m = p[5] + 2
+            if 2 * m >= min(w, h):
+                m = 0
+            cx, cy = rng.uniform(m, w - m), rng.uniform(m, h - m)
+        else:
+            # centred near a random raster edge: a void touching the border
+            side = int(rng.integers(4))
+            off = rng.uniform(-0.5, 0.5) * r
+            if side < 2:
+                cx, cy = rng.uniform(0, w), (off if side == 0 else h - 1 + off)
+            else:
+                cx, cy = (off if side == 2 else w - 1 + off), rng.uniform(0, h)
+        # update the count only inside the blob's box
+        rmax = p[5]
+        x0, x1 = max(0, int(cx - rmax) - 1), min(w, int(cx + rmax) + 2)
+        y0, y1 = max(0, int(cy - rmax) - 1), min(h, int(cy + rmax) + 2)
+        before = int(void[y0:y1, x0:x1].sum())
+        _raster_blob(void, cx, cy, r, p)
+        count += int(void[y0:y1, x0:x1].sum()) - before
+    if valid is not None:
+        void &= valid
+    return void
+
+
+def punch(kind: str, shape, seed: int, valid: np.ndarray | None = None) -> np.ndarray:
+    if kind == "kept3":
+        v = punch_kept3(shape, seed)
+        if valid is not None:
+            v &= valid
+        return v
+    if kind == "blobs":
+        return punch_blobs(shape, seed, valid=valid)
+    raise ValueError(f"unknown void kind {kind!r}")
+
+
+def make_voided(src_path: str, dst_path: str, kind: str, seed: int) -> dict:
+    """Create (once) the voided copy of a void-free DEM. Returns a small info
+    dict (also cached next to the file as JSON)."""
+    info_path = dst_path + ".json"
+    if os.path.exists(dst_path) and os.path.exists(info_path):
+        with open(info_path) as f:
+            return json.load(f)
+    src = read_raster(src_path)
+    valid = src.valid()
+    void = punch(kind, src.shape, seed, valid=valid)
+    nodata = write_voided(src_path, dst_path, void, src)
+    info = {"src": src_path, "kind": kind, "seed": seed,
+            "width": src.shape[1], "height": src.shape[0],
+            "void_cells": int(void.sum()),
+            "void_fraction": float(void.sum()) / void.size,
+            "nodata": nodata}
+    with open(info_path, "w") as f:
+        json.dump(info, f, indent=1)
+    return info
+
+
+# --------------------------------------------------------------------------
+# metrics
+# --------------------------------------------------------------------------
+
+def _neigh_stats(z: np.ndarray, ys: np.ndarray, xs: np.ndarray):
+    """5-point Laplacian and central-difference slope at interior cells
+    (ys, xs) of z (float64 gathered values, no full-size temporaries)."""
+    c = z[ys, xs]
+    n, s = z[ys - 1, xs], z[ys + 1, xs]
+    wv, e = z[ys, xs - 1], z[ys, xs + 1]
+    lap = n + s + wv + e - 4.0 * c
+    slope = np.hypot((e - wv) * 0.5, (s - n) * 0.5)
+    return lap, slope
+
+
+def metrics(truth: np.ndarray, fill: np.ndarray, removed: np.ndarray,
+            fill_nodata=None) -> dict:
+    """Error metrics over the removed cells.
+
+    rmse, max_err: over removed cells that the fill filled (completeness says
+    how many that is). lap_ratio: std of the 5-point Laplacian of the fill
+    over removed cells / the same for the truth. slope_ratio: mean gradient
+    magnitude (central differences, pixel units) of the fill over removed
+    cells / the same for the truth. Both ratios use removed cells whose 4
+    neighbours are inside the raster and valid in the fill."""
+    ys, xs = np.nonzero(removed)
+    n_removed = ys.size
+    if n_removed == 0:
+        return {"n_removed": 0}
+    fvals = fill[ys, xs]
+    fvalid = valid_mask(fvals, fill_nodata)
+    n_filled = int(fvalid.sum())
+    out = {"n_removed": int(n_removed), "n_filled": n_filled,
+           "completeness": n_filled / n_removed}
+    if n_filled == 0:
+        return out
+    err = fvals[fvalid].astype(np.float64) - truth[ys[fvalid], xs[fvalid]].astype(np.float64)
+    out["rmse"] = float(np.sqrt(np.mean(err * err)))
+    out["max_err"] = float(np.max(np.abs(err)))
+    out["bias"] = float(np.mean(err))
+
+    h, w = truth.shape
+    inner = (ys > 0) & (ys < h - 1) & (xs > 0) & (xs < w - 1)
+    ys, xs = ys[inner], xs[inner]
+    if ys.size < 2:
+        return out
+    # fill values as float64 with NaN where the fill left nodata
+    ok = np.ones(ys.size, dtype=bool)
+    for dy, dx in ((0, 0), (-1, 0), (1, 0), (0, -1), (0, 1)):
+        ok &= valid_mask(fill[ys + dy, xs + dx], fill_nodata)
+    ys, xs = ys[ok], xs[ok]
+    if ys.size < 2:
+        return out
+    # gather-based: works on the 52 M-cell mosaic without full float copies
+    lap_t, sl_t = _neigh_stats(_F64(truth), ys, xs)
+    lap_f, sl_f = _neigh_stats(_F64(fill), ys, xs)
+    st = float(np.std(lap_t))
+    out["lap_fill"] = float(np.std(lap_f))
+    out["lap_truth"] = st
+    out["lap_ratio"] = out["lap_fill"] / st if st > 0 else float("nan")
+    mt = float(np.mean(sl_t))
+    out["slope_ratio"] = float(np.mean(sl_f)) / mt if mt > 0 else float("nan")
+    return out
+
+
+class _F64:
+    """Index wrapper returning float64 gathers of an array of any dtype."""
+
+    def __init__(self, a):
+        self.a = a
+
+    def __getitem__(self, idx):
+        return self.a[idx].astype(np.float64)
+
+
+def completeness(before_nodata: np.ndarray, fill: np.ndarray, fill_nodata) -> dict:
+    """For real-void tiles: fraction of the originally-nodata cells the fill filled."""
+    ys, xs = np.nonzero(before_nodata)
+    n = ys.size
+    if n == 0:
+        return {"n_removed": 0, "n_filled": 0, "completeness": 1.0}
+    nf = int(valid_mask(fill[ys, xs], fill_nodata).sum())
+    return {"n_removed": int(n), "n_filled": nf, "completeness": nf / n}
+
+
+def pixel_md5(path: str) -> str:
+    """md5 of the pixel data (band 1..n, native type), ignoring file metadata."""
+    ds = gdal.Open(path)
+    m = hashlib.md5()
+    for i in range(1, ds.RasterCount + 1):
+        m.update(np.ascontiguousarray(ds.GetRasterBand(i).ReadAsArray()).tobytes())
+    return m.hexdigest()
+
+
+# --------------------------------------------------------------------------
+# timing
+# --------------------------------------------------------------------------
+
+_TIME_RE_RSS = re.compile(r"Maximum resident set size \(kbytes\):\s*(\d+)")
+_TIME_RE_WALL = re.compile(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\):\s*([\d:.]+)")
+_TIME_RE_USER = re.compile(r"User time \(seconds\):\s*([\d.]+)")
+_TIME_RE_SYS = re.compile(r"System time \(seconds\):\s*([\d.]+)")
+
+
+def _parse_clock(s: str) -> float:
+    parts = [float(p) for p in s.split(":")]
+    t = 0.0
+    for p in parts:
+        t = t * 60 + p
+    return t
+
+
+def parse_time_v(text: str) -> dict:
+    out = {}
+    m = _TIME_RE_RSS.search(text)
+    if m:
+        out["rss_mb"] = int(m.group(1)) / 1024.0
+    m = _TIME_RE_WALL.search(text)
+    if m:
+        out["wall_s"] = _parse_clock(m.group(1))
+    m = _TIME_RE_USER.search(text)
+    if m:
+        out["user_s"] = float(m.group(1))
+    m = _TIME_RE_SYS.search(text)
+    if m:
+        out["sys_s"] = float(m.group(1))
+    return out
+
+
+def run_timed(cmd: list[str], timeout: float | None = None, env=None) -> dict:
+    """Run ``cmd`` under ``/usr/bin/time -v``. Returns rc, wall_s, rss_mb,
+    user_s, sys_s, timed_out, stderr tail. On timeout the whole process group
+    is killed and ``timed_out`` is True (wall_s is then the timeout)."""
+    with tempfile.NamedTemporaryFile("r", suffix=".time", delete=False) as tf:
+        tpath = tf.name
+    full = ["/usr/bin/time", "-v", "-o", tpath] + [str(c) for c in cmd]
+    t0 = time.monotonic()
+    p = subprocess.Popen(full, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         text=True, start_new_session=True, env=env)
+    timed_out = False
+    try:
+        so, se = p.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        timed_out = True
+        try:
+            os.killpg(p.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        so, se = p.communicate()
+    elapsed = time.monotonic() - t0
+    try:
+        with open(tpath) as f:
+            tv = f.read()
+    finally:
+        os.unlink(tpath)
+    res = parse_time_v(tv) if not timed_out else {}
+    # /usr/bin/time prints wall time in centiseconds; keep it as a cross-check
+    # and report our own monotonic clock (the fork of /usr/bin/time is ~1 ms)
+    if "wall_s" in res:
+        res["time_v_wall_s"] = res.pop("wall_s")
+    res["wall_s"] = elapsed
+    res.update({"rc": p.returncode if not timed_out else None,
+                "timed_out": timed_out, "timeout_s": timeout,
+                "cmd": " ".join(str(c) for c in cmd),
+                "stderr": (se or "")[-2000:]})
+    return res
+
+
+# --------------------------------------------------------------------------
+# fillers
+# --------------------------------------------------------------------------
+
+# name -> how to build the command line. mcmd methods need the binary.
+MCMD_METHODS = {
+    "mcmd": ["-method", "mcmd"],
+    "mcmd-rs-auto": ["-method", "mcmd", "-rs", "auto"],
+    "paper-ds": ["-method", "paper-ds"],
+    "paper-te": ["-method", "paper-te"],
+}
+GDAL_METHODS = {
+    "gdal-si0": ["-si", "0"],
+    "gdal-si2": ["-si", "2"],
+}
+
+
+def fill_cmd(method: str, src: str, dst: str, md: int, mcmd: str,
+             seed: int | None = None, extra: list[str] | None = None) -> list[str]:
+    extra = list(extra or [])
+    if method in GDAL_METHODS:
+        return [GDAL_FILL, "-q", "-md", str(md)] + GDAL_METHODS[method] + extra + [src, dst]
+    if method in MCMD_METHODS:
+        args = list(MCMD_METHODS[method])
+        if seed is not None and "auto" in args:
+            args += ["-seed", str(seed)]
+        return [mcmd, "-q"] + args + extra + [src, dst]
+    raise ValueError(f"unknown method {method!r}")
+
+
+def mcmd_status(mcmd: str) -> tuple[bool, str]:
+    """(usable, message). Checks that the CLI exists and answers --help."""
+    if not os.path.isfile(mcmd) or not os.access(mcmd, os.X_OK):
+        return False, (f"mcmd CLI not found at {mcmd!r} (build it, or pass --mcmd PATH); "
+                       "mcmd methods are skipped, GDAL still runs")
+    try:
+        p = subprocess.run([mcmd, "--help"], capture_output=True, text=True, timeout=30)
+    except Exception as e:  # noqa: BLE001
+        return False, f"mcmd CLI {mcmd!r} does not run: {e}"
+    text = (p.stdout or "") + (p.stderr or "")
+    return True, text
+
+
+def binary_id(path: str) -> str:
+    """Short content hash of a binary, so cached results are redone when it changes."""
+    try:
+        h = hashlib.sha256()
+        with open(path, "rb") as f:
+            for chunk in iter(lambda: f.read(1 << 20), b""):
+                h.update(chunk)
+        return h.hexdigest()[:16]
+    except OSError:
+        return "missing"
+
+
+def gdal_id() -> str:
+    return "gdal-" + gdal.__version__
+
+
+# --------------------------------------------------------------------------
+# largest void and hillshades
+# --------------------------------------------------------------------------
+
+def largest_void_bbox(void: np.ndarray) -> tuple[int, int, int, int] | None:
+    """Bounding box (x0, y0, w, h) of the largest 8-connected void component,
+    via GDAL's polygonizer (C speed, no scipy)."""
+    if not void.any():
+        return None
+    h, w = void.shape
+    mem = gdal.GetDriverByName("MEM").Create("", w, h, 1, gdal.GDT_Byte)
+    mem.SetGeoTransform((0, 1, 0, 0, 0, 1))   # pixel coordinates, y down
+    b = mem.GetRasterBand(1)
+    b.WriteArray(void.astype(np.uint8))
+    vds = ogr.GetDriverByName("Memory").CreateDataSource("v")
+    lyr = vds.CreateLayer("v", geom_type=ogr.wkbPolygon)
+    lyr.CreateField(ogr.FieldDefn("val", ogr.OFTInteger))
+    gdal.Polygonize(b, b, lyr, 0, ["8CONNECTED=8"])
+    best, best_area = None, -1.0
+    for feat in lyr:
+        g = feat.GetGeometryRef()
+        a = g.GetArea()
+        if a > best_area:
+            best_area, best = a, g.GetEnvelope()
+    if best is None:
+        return None
+    minx, maxx, miny, maxy = best
+    x0, y0 = int(math.floor(minx)), int(math.floor(miny))
+    return x0, y0, int(math.ceil(maxx)) - x0, int(math.ceil(maxy)) - y0
+
+
+def void_window(bbox, shape, max_size: int = PNG_MAX, margin: float = 0.25):
+    """A square-ish window around ``bbox`` (x0, y0, w, h) with a margin,
+    clipped to the raster. If the window is larger than ``max_size`` it is
+    kept whole and the PNG is downsampled (overview); ``detail`` is then a
+    full-resolution max_size² window at the void's centre."""
+    H, W = shape
+    x0, y0, bw, bh = bbox
+    side = int(max(bw, bh) * (1 + 2 * margin)) + 8
+    side = max(side, 64)
+    cx, cy = x0 + bw / 2.0, y0 + bh / 2.0
+
+    def win(s):
+        ww, hh = min(s, W), min(s, H)
+        xo = int(round(cx - ww / 2.0))
+        yo = int(round(cy - hh / 2.0))
+        xo = max(0, min(W - ww, xo))
+        yo = max(0, min(H - hh, yo))
+        return xo, yo, ww, hh
+
+    main = win(side)
+    detail = win(max_size) if max(main[2], main[3]) > max_size else None
+    return main, detail
+
+
+def hillshade_png(src_path: str, window, out_png: str, max_size: int = PNG_MAX) -> str:
+    """gdaldem hillshade of ``window`` (xoff, yoff, w, h) of ``src_path`` as an
+    8-bit PNG no larger than max_size². A larger window is averaged down
+    first. Nodata (unfilled) cells come out black."""
+    xo, yo, w, h = window
+    scale = max(w, h) / float(max_size)
+    tag = hashlib.md5(f"{src_path}{window}{os.getpid()}{time.time()}".encode()).hexdigest()[:10]
+    crop = f"/vsimem/crop_{tag}.tif"
+    shade = f"/vsimem/shade_{tag}.tif"
+    kw = {"srcWin": [xo, yo, w, h]}
+    if scale > 1:
+        kw.update(width=max(1, int(round(w / scale))), height=max(1, int(round(h / scale))),
+                  resampleAlg="average")
+    gdal.Translate(crop, src_path, **kw)
+    opts = {"computeEdges": True, "zFactor": 1.0}
+    if is_geographic(src_path):
+        opts["scale"] = 111120.0
+    gdal.DEMProcessing(shade, crop, "hillshade", **opts)
+    os.makedirs(os.path.dirname(os.path.abspath(out_png)), exist_ok=True)
+    # small windows are enlarged by an integer factor (nearest) for viewing
+    k = int(max_size // max(w, h)) if scale <= 1 else 1
+    kw = {"width": w * k, "height": h * k, "resampleAlg": "nearest"} if k >= 2 else {}
+    gdal.Translate(out_png, shade, format="PNG", creationOptions=["ZLEVEL=9"], **kw)
+    for p in (crop, shade):
+        gdal.Unlink(p)
+    aux = out_png + ".aux.xml"
+    if os.path.exists(aux):
+        os.unlink(aux)
+    return out_png
+
+
+# --------------------------------------------------------------------------
+# misc
+# --------------------------------------------------------------------------
+
+def machine_info() -> str:
+    cpu = platform.processor() or ""
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    mem = ""
+    try:
+        with open("/proc/meminfo") as f:
+            kb = int(f.readline().split()[1])
+            mem = f"{kb / 1024 / 1024:.0f} GiB RAM"
+    except (OSError, ValueError, IndexError):
+        pass
+    return f"{cpu}, {os.cpu_count()} cores, {mem}, {platform.system()} {platform.release()}, GDAL {gdal.__version__}"
+
+
+def git_rev() -> str:
+    try:
+        r = subprocess.run(["git", "-C", ROOT_DIR, "rev-parse", "--short", "HEAD"],
+                           capture_output=True, text=True, timeout=10)
+        return r.stdout.strip() or "?"
+    except Exception:  # noqa: BLE001
+        return "?"
+
+
+def median(xs):
+    xs = [x for x in xs if x is not None and not (isinstance(x, float) and math.isnan(x))]
+    if not xs:
+        return None
+    return float(np.median(xs))
+
+
+def fmt(x, spec=".3f", none="—"):
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return none
+    return format(x, spec)
+
+
+def load_json(path):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def save_json(path, obj):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    tmp = path + ".part"
+    with open(tmp, "w") as f:
+        json.dump(obj, f, indent=1, sort_keys=True)
+    os.replace(tmp, path)
+
+
+# --------------------------------------------------------------------------
+# resumable runs
+# --------------------------------------------------------------------------
+
+def cached_fill(res_path: str, cmd: list[str], key: str, out_path: str,
+                timeout: float | None, evaluate, force: bool = False,
+                log=print, repeat: int = 1) -> dict:
+    """Run one fill unless ``res_path`` already holds a result with the same
+    ``key`` (binary hash / GDAL version + command line). ``evaluate(out_path)``
+    returns the metrics dict merged into the result. Failed and timed-out runs
+    are cached too (they are redone when the key changes or with force).
+    With ``repeat`` > 1 the command is run that many times (stopping at the
+    first failure): wall_s is the median, rss_mb the maximum, walls all."""
+    full_key = key + " | " + " ".join(str(c) for c in cmd)
+    old = load_json(res_path)
+    if old and not force and old.get("key") == full_key:
+        return old
+    log(f"    run: {' '.join(str(c) for c in cmd)}" + (f"  (x{repeat})" if repeat > 1 else ""))
+    tries = []
+    for _ in range(max(1, repeat)):
+        if os.path.exists(out_path):
+            os.unlink(out_path)
+        r = run_timed(cmd, timeout=timeout)
+        tries.append(r)
+        if r["timed_out"] or r["rc"] != 0:
+            break
+    if len(tries) > 1 and all(t["rc"] == 0 for t in tries):
+        walls = [t["wall_s"] for t in tries]
+        r = dict(tries[-1])
+        r["walls"] = walls
+        r["wall_s"] = float(np.median(walls))
+        r["rss_mb"] = max(t.get("rss_mb", 0) for t in tries)
+    r["key"] = full_key
+    r["ok"] = (not r["timed_out"]) and r["rc"] == 0 and os.path.exists(out_path)
+    if r["ok"]:
+        try:
+            r.update(evaluate(out_path))
+        except Exception as e:  # noqa: BLE001
+            r["ok"] = False
+            r["error"] = f"evaluation failed: {e}"
+    elif r["timed_out"]:
+        r["error"] = f"timeout > {timeout:.0f} s"
+    else:
+        tail = (r.get("stderr") or "").strip().splitlines()
+        r["error"] = f"rc={r['rc']}: " + (tail[-1] if tail else "no output")
+    r["when"] = time.strftime("%Y-%m-%d %H:%M:%S")
+    save_json(res_path, r)
+    status = "ok" if r["ok"] else r.get("error", "failed")
+    extra = f", rmse {r['rmse']:.3f}" if r.get("rmse") is not None else ""
+    log(f"      {status}: {r['wall_s']:.2f} s, {r.get('rss_mb', 0):.0f} MB{extra}")
+    return r
+
+
+def known_unchanged(inp: np.ndarray, valid: np.ndarray, fill: np.ndarray) -> bool:
+    """True if every valid input cell is bit-identical in the fill."""
+    if inp.shape != fill.shape or inp.dtype != fill.dtype:
+        return False
+    a, b = inp[valid], fill[valid]
+    if np.issubdtype(a.dtype, np.floating):
+        a, b = a.view(np.dtype(f"u{a.dtype.itemsize}")), b.view(np.dtype(f"u{b.dtype.itemsize}"))
+    return bool(np.array_equal(a, b))
