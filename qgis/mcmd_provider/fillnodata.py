@@ -31,6 +31,12 @@ METHODS = [
     ('paper-te', 'Paper, triangle-edge'),
 ]
 
+# Δ forms (-delta), first is the tool's default.
+DELTA_FORMS = [
+    ('normalized', 'Normalized weighted mean (datum-independent, default)'),
+    ('paper', 'Paper (pulls towards 0 when I != 0)'),
+]
+
 # Numeric parameters: name, CLI flag, label, type, default (= the tool's default,
 # the flag is only passed when the value differs), min, max, advanced.
 _DOUBLE = QgsProcessingParameterNumber.Double
@@ -58,10 +64,11 @@ same options; the command is shown in the log.</p>
 <dl>
 <dt>Input layer</dt><dd>Raster with voids. Georeferencing, CRS, nodata value, metadata and band
 descriptions are kept in the output.</dd>
-<dt>Bands</dt><dd>Bands to fill (<code>-b</code>); empty fills every band.</dd>
-<dt>Validity mask</dt><dd>Optional raster whose zero cells mark the voids to fill, instead of the
-input's own nodata/mask. <i>Do not use the default validity mask</i> treats every cell of the band
-as known except those of the mask layer.</dd>
+<dt>Bands</dt><dd>Bands to fill (<code>-b</code>); empty fills every band except alpha bands.
+Bands not filled are copied unchanged.</dd>
+<dt>Validity mask</dt><dd>Optional raster of the same size whose zero cells are voids too, added
+to the band's own nodata/mask. <i>Do not use the default validity mask</i> ignores the band's
+nodata value, mask and alpha band: only the validity mask and NaN cells are then voids.</dd>
 <dt>Method</dt><dd><b>MCMD</b> (default) keeps the paper's bottom-up-then-top-down structure with
 better ingredients (weighted bottom-up pass, cubic stencils, thin-plate relaxation): smooth fills
 without creases, continuous slopes at the void border. <b>Paper, diamond-square</b> and <b>Paper,
@@ -70,30 +77,34 @@ hillshades show a lattice of dimples (diamond-square) or straight creases (trian
 <dt>Maximum distance</dt><dd>Cells farther than this many pixels from a known cell stay nodata;
 0 fills every void whatever its size.</dd>
 <dt>I (top-down shape)</dt><dd>Shapes the distance weighting Δ used when a void cell is
-interpolated from its ancestors. 0 is a plain mean; I &gt; 0 weights near ancestors more (bell-like
-fills that hug the void border); I &lt; 0 weights far ones more (ridged, sharper fills). |I| &lt; 1,
-= 1, &gt; 1 give bell, linear, ridged profiles.</dd>
+interpolated from its ancestors. 0 blends the surrounding terrain evenly; I &gt; 0 favours nearby
+cells and gives rounded, bell-like fills; I &lt; 0 favours distant cells and gives sharper,
+ridge-like fills. |I| &lt; 1, = 1, &gt; 1 give bell, linear, ridged profiles.</dd>
 <dt>I_bu (bottom-up shape)</dt><dd>The same weighting for the bottom-up pass that estimates coarse
 elevations inside the void from the known cells: large positive values let the nearest known
 cells dominate (features carried from the border into the void), negative values flatten.</dd>
+<dt>Δ form</dt><dd><b>normalized</b> (default): a weighted mean, so the fill does not depend on
+the elevation datum (filling z+c gives fill+c). <b>paper</b>: the paper's formula, which pulls
+fills towards 0 when I or I_bu is not 0.</dd>
 <dt>RS (displacement scale)</dt><dd>Amplitude of the random midpoint displacement, as a fraction
-of the known elevation range. 0 (default) gives a smooth, deterministic fill; a number such as
-0.1 adds fractal roughness; <code>auto</code> calibrates amplitude and H from the known terrain
+of the known elevation range of the band (0.01 on a DEM spanning 1000 m is about 10 m of
+relief). 0 (default) gives a smooth, deterministic fill; a number adds fractal roughness; <code>auto</code> calibrates amplitude and H from the known terrain
 around each void so the fill looks as rough as its surroundings.</dd>
 <dt>H (roughness exponent)</dt><dd>Hurst-like exponent: how fast the displacement shrinks at finer
 levels. Low H (0.2) gives rough, jagged terrain; high H (0.8) smooth, rolling terrain. No effect
 when RS is 0.</dd>
-<dt>rt (displacement bias)</dt><dd>Shifts the random deviate in [-1, 1] before scaling: negative
-values carve (fills tend below the interpolated surface), positive values build up. No effect when
-RS is 0.</dd>
+<dt>rt (displacement bias)</dt><dd>Shifts the random deviate in [-1, 1] before scaling: values
+&gt; 0 raise, &lt; 0 lower the filled terrain on average. No effect when RS is 0.</dd>
 <dt>Seed</dt><dd>Seed of the counter-based noise: the same seed gives the same terrain, whatever
 the tile size or number of threads. No effect when RS is 0.</dd>
-<dt>Tile size</dt><dd>Side of the square processing tiles, 2^n+1 pixels (e.g. 1025, 2049); 0
-chooses automatically. Bounds memory; the result is seamless and does not depend on it.</dd>
-<dt>Threads</dt><dd>Worker threads; 0 lets the tool decide. The result does not depend on it.</dd>
+<dt>Tile size</dt><dd>Side of the square processing tiles, 2^n+1 pixels (e.g. 513, 1025); 0
+chooses automatically. Bounds memory; the result does not depend on it.</dd>
+<dt>Threads</dt><dd>Worker threads; 0 lets the tool decide (all CPUs). The result does not depend
+on it.</dd>
 <dt>Creation options</dt><dd>GDAL creation options of the output format, e.g.
 <code>COMPRESS=DEFLATE|TILED=YES</code>.</dd>
-<dt>Additional command-line parameters</dt><dd>Appended as is to the command line.</dd>
+<dt>Additional command-line parameters</dt><dd>Appended as is to the command line, e.g.
+<code>-o RIDGE_I=2</code> for any other MCMDFillNodata option.</dd>
 </dl>
 <p>The <code>mcmd_fillnodata</code> executable is taken from Settings &gt; Options &gt; Processing
 &gt; Providers &gt; MCMD void fill, else from a <code>bin/</code> folder next to the plugin, else
@@ -112,6 +123,7 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
     MASK = 'MASK'
     NO_MASK = 'NO_MASK'
     METHOD = 'METHOD'
+    DELTA = 'DELTA'
     RS = 'RS'
     CREATION_OPTIONS = 'CREATION_OPTIONS'
     EXTRA = 'EXTRA'
@@ -184,6 +196,12 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
             if advanced:
                 param.setFlags(param.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
             self.addParameter(param)
+            if name == 'I_BU':
+                delta = QgsProcessingParameterEnum(
+                    self.DELTA, self.tr('Δ form (how parents are averaged)'),
+                    options=[self.tr(label) for _, label in DELTA_FORMS], defaultValue=0)
+                delta.setFlags(delta.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
+                self.addParameter(delta)
             if name == 'MAX_DISTANCE':
                 # RS right after the distance: the two options users change most.
                 self.addParameter(QgsProcessingParameterString(
@@ -281,6 +299,10 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
                 value = self.parameterAsDouble(parameters, name, context)
             if value != default:
                 args += [flag, self._number_text(value, kind)]
+            if name == 'I_BU':
+                delta = DELTA_FORMS[self.parameterAsEnum(parameters, self.DELTA, context)][0]
+                if delta != DELTA_FORMS[0][0]:
+                    args += ['-delta', delta]
             if name == 'MAX_DISTANCE':
                 rs = self.parse_rs(self.parameterAsString(parameters, self.RS, context))
                 if rs is None:

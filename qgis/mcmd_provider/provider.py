@@ -39,7 +39,7 @@ class McmdProvider(QgsProcessingProvider):
     def load(self):
         # Shown under Settings > Options > Processing > Providers > MCMD void fill.
         if ProcessingConfig is not None:
-            ProcessingConfig.settingIcons[self.name()] = self.icon()
+            ProcessingConfig.setGroupIcon(self.name(), self.icon())
             ProcessingConfig.addSetting(Setting(
                 self.name(), tool.SETTING_EXECUTABLE,
                 self.tr('mcmd_fillnodata executable (empty: bin/ next to the plugin, then PATH)'),
@@ -49,7 +49,7 @@ class McmdProvider(QgsProcessingProvider):
         return True
 
     def unload(self):
-        if ProcessingConfig is not None:
+        if ProcessingConfig is not None and tool.SETTING_EXECUTABLE in ProcessingConfig.settings:
             ProcessingConfig.removeSetting(tool.SETTING_EXECUTABLE)
 
     def loadAlgorithms(self):  # noqa: N802
