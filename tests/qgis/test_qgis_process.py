@@ -1,0 +1,101 @@
+"""End to end through qgis_process, the way a headless user or a CI job runs the provider.
+
+Debian's /usr/bin/qgis_process wrapper is broken (it passes --noversioncheck), so the
+real binary /usr/bin/qgis_process.bin is called. The executable is found on PATH (the
+provider's last fallback); the plugin through QGIS_PLUGINPATH; the profile lives in a
+throw-away HOME.
+"""
+
+import os
+import shutil
+import subprocess
+import zipfile
+
+import pytest
+
+from conftest import REPO, cli_path, plugin_root, run_cli
+from test_provider import assert_same_raster, read_bands
+
+QGIS_PROCESS = '/usr/bin/qgis_process.bin'
+
+
+@pytest.fixture()
+def qp_env(tmp_path):
+    if not os.path.exists(QGIS_PROCESS):
+        pytest.fail(f'{QGIS_PROCESS} is missing (package qgis)')
+    home = tmp_path / 'home'
+    home.mkdir()
+    env = dict(os.environ)
+    for var in ('XDG_DATA_HOME', 'XDG_CONFIG_HOME', 'QGIS_CUSTOM_CONFIG_PATH'):
+        env.pop(var, None)
+    env.update({
+        'HOME': str(home),
+        'QT_QPA_PLATFORM': 'offscreen',
+        'XDG_RUNTIME_DIR': str(tmp_path / 'runtime'),
+        'QGIS_PLUGINPATH': plugin_root(),
+        'PATH': os.path.dirname(cli_path()) + os.pathsep + env.get('PATH', '/usr/bin:/bin'),
+        'PYTHONDONTWRITEBYTECODE': '1',
+    })
+    os.makedirs(env['XDG_RUNTIME_DIR'], mode=0o700)
+    return env
+
+
+def qgis_process(env, *args, check=True):
+    proc = subprocess.run([QGIS_PROCESS] + list(args), env=env, stdin=subprocess.DEVNULL,
+                          capture_output=True, text=True, timeout=300)
+    if check and proc.returncode != 0:
+        raise AssertionError(f'qgis_process {" ".join(args)} failed ({proc.returncode}):\n'
+                             f'{proc.stdout}\n{proc.stderr}')
+    return proc
+
+
+def test_qgis_process_fills_like_the_cli(qp_env, cli, data, tmp_path):
+    enabled = qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    assert 'mcmd_provider' in enabled.stdout + enabled.stderr
+
+    listing = qgis_process(qp_env, 'list')
+    assert 'mcmd:fillnodata' in listing.stdout
+
+    src = data('peaks_int16_geo.tif')
+    out = str(tmp_path / 'qp.tif')
+    ref = str(tmp_path / 'cli.tif')
+    run_cli(cli, ['-q', data('peaks_int16_geo.tif', 'cli'), ref])
+    run = qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={src}', f'OUTPUT={out}')
+    # The command is logged, and the tool found on PATH.
+    assert 'mcmd_fillnodata command:' in run.stdout
+    assert shutil.which('mcmd_fillnodata', path=qp_env['PATH']) in run.stdout
+    assert_same_raster(out, ref)
+    _, _, [(before, nodata, _)] = read_bands(src)
+    _, _, [(after, _, _)] = read_bands(out)
+    assert (before == nodata).any() and not (after == nodata).any()
+
+
+def test_qgis_process_reports_the_tool_error(qp_env, data, tmp_path):
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    out_dir = tmp_path / 'out'
+    out_dir.mkdir()
+    run = qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--',
+                       f'INPUT={data("peaks_int16_geo.tif")}', 'EXTRA=-method no-such-method',
+                       f'OUTPUT={out_dir / "x.tif"}', check=False)
+    assert run.returncode != 0
+    assert 'mcmd_fillnodata: error:' in run.stdout + run.stderr
+    assert os.listdir(out_dir) == []
+
+
+def test_zip_and_install_scripts(tmp_path):
+    """The zip holds mcmd_provider/ at its top (what Install from ZIP wants)."""
+    out = tmp_path / 'mcmd_provider.zip'
+    subprocess.run(['sh', os.path.join(REPO, 'qgis', 'make_zip.sh'), str(out)], check=True,
+                   capture_output=True)
+    with zipfile.ZipFile(out) as archive:
+        names = archive.namelist()
+    assert 'mcmd_provider/metadata.txt' in names and 'mcmd_provider/__init__.py' in names
+    assert all(name.startswith('mcmd_provider/') for name in names)
+    assert not any('__pycache__' in name for name in names)
+
+    plugins = tmp_path / 'plugins'
+    env = dict(os.environ, QGIS_PLUGINS_DIR=str(plugins))
+    subprocess.run(['sh', os.path.join(REPO, 'qgis', 'install.sh'), '--cli', cli_path()],
+                   check=True, capture_output=True, env=env)
+    assert (plugins / 'mcmd_provider' / 'metadata.txt').is_file()
+    assert os.access(plugins / 'mcmd_provider' / 'bin' / 'mcmd_fillnodata', os.X_OK)
