@@ -1,0 +1,39 @@
+// The discrete thin-plate energy on a lattice and its Gauss-Seidel smoother.
+//
+//   E(z) = Σ z_xx² + Σ z_yy² + 2 Σ z_xy²
+//
+// z_xx = z(x-1,y) - 2 z(x,y) + z(x+1,y) for every centre whose 3 cells lie in
+// the lattice (z_yy likewise), z_xy = the cross difference of every 2×2 block.
+// Only terms that fit inside the lattice are summed: the natural boundary
+// condition of a free plate. In the interior ∂E/∂z is the 13-point biharmonic
+// stencil; at the border it stays the gradient of a positive semi-definite
+// energy whose null space is the planes, so Gauss-Seidel (exact minimisation
+// along one cell) converges. (Σ (5-point Laplacian)² over interior centres has
+// the same interior stencil but every discrete harmonic function in its null
+// space: a void at the border then becomes an ill-posed Cauchy problem.)
+#pragma once
+
+#include "mcmd/lattice.hpp"
+
+namespace mcmd {
+
+// (A z)_p = ½ ∂E/∂z_p at cell (x, y) and the diagonal A_pp (0 when no term
+// touches the cell, e.g. the corners of a 2×2 lattice have only z_xy).
+struct ThinPlateRow {
+  double az = 0.0;
+  double diag = 0.0;
+};
+ThinPlateRow thin_plate_row(const double* z, int side, int x, int y);
+
+// `sweeps` lexicographic SOR sweeps of A z = rhs over the free cells (rhs may
+// be null for 0), factor `omega` (1 = Gauss-Seidel). Pinned cells never change.
+void relax(Lattice& lat, const double* rhs, int sweeps, double omega = 1.0);
+
+// rhs - A z at one cell (rhs may be null).
+double residual_at(const Lattice& lat, const double* rhs, int x, int y);
+
+// r = rhs - A z at the free cells; entries of pinned cells are left as they
+// are (keep them 0). Pre: r.size() == z.size().
+void residual(const Lattice& lat, const double* rhs, std::vector<double>& r);
+
+}  // namespace mcmd

@@ -1,0 +1,42 @@
+// Multigrid V-cycles for the constrained thin-plate problem: free cells solve
+// A z = rhs, pinned cells are Dirichlet.
+#pragma once
+
+#include <vector>
+
+#include "mcmd/lattice.hpp"
+
+namespace mcmd {
+
+struct VCycleSchedule {
+  int pre_sweeps = 2;      // Gauss-Seidel sweeps before the coarse correction
+  int post_sweeps = 2;     // and after it
+  int coarsest_side = 5;   // solve here by sweeping only
+  int coarsest_sweeps = 60;
+  CoarsePin coarse_pin = CoarsePin::neighbourhood;
+};
+
+// Corrections live on coarser lattices whose pinned cells follow
+// schedule.coarse_pin. With `position` a coarse problem misses the fine
+// constraints between its lattice points, is softer than the fine one and its
+// corrections overshoot (V-cycles diverged on scattered constraints);
+// `neighbourhood` keeps it at least as stiff.
+class Multigrid {
+ public:
+  Multigrid(const Lattice& finest, VCycleSchedule schedule);
+
+  // One V-cycle on `finest` (the lattice given to the constructor, or one with
+  // the same pinned cells): smooth, restrict the residual with the transpose of
+  // the cubic prolongation, correct from the next coarser lattice (recursively,
+  // zero at its pinned cells), add its cubic prolongation, smooth.
+  void v_cycle(Lattice& finest);
+
+ private:
+  void cycle(Lattice& fine, const double* rhs, int k);
+
+  VCycleSchedule schedule_;
+  std::vector<Lattice> coarse_;                // coarse_[k]: side 2^k + 1, z = correction
+  std::vector<std::vector<double>> rhs_;       // right-hand side of coarse_[k]
+};
+
+}  // namespace mcmd

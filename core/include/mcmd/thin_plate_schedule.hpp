@@ -1,0 +1,30 @@
+// The tunable schedule of the default method, for tests and benchmarks; the
+// defaults are the measured choice (docs/default-method.md).
+#pragma once
+
+#include "mcmd/fill.hpp"
+#include "mcmd/multigrid.hpp"
+
+namespace mcmd {
+
+// Starting values of a level's free cells in the top-down cascade.
+enum class CascadeStart {
+  prolong,  // cubic prolongation of the relaxed coarser level only
+  blend,    // new cells: mix of prolongation and the bottom-up estimate by its confidence
+};
+
+struct ThinPlateSchedule {
+  int finest_sweeps = 2;   // cascade sweeps at the finest level, doubling per coarser level
+  int max_sweeps = 32;     // cap on cascade sweeps per level
+  double omega = 1.0;      // SOR factor of the cascade sweeps
+  CascadeStart start = CascadeStart::blend;
+  double spring = 10.0;    // strength of the soft estimates on coarse cascade levels (0: none)
+  int v_cycles = 3;        // at the finest level, after the cascade
+  VCycleSchedule vcycle{};
+};
+
+// thin_plate_fill with an explicit schedule; noise (rs, rs_auto) included.
+void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,
+                               const ProgressFn& progress = {});
+
+}  // namespace mcmd

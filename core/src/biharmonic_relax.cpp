@@ -1,0 +1,132 @@
+#include "mcmd/biharmonic_relax.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace mcmd {
+
+namespace {
+
+// Interior cells (2 <= x, y <= side-3): every term fits, the 13-point stencil.
+inline double interior_az(const double* z, std::ptrdiff_t s, std::size_t i) {
+  const double* c = z + i;
+  return 20.0 * c[0] - 8.0 * (c[-1] + c[1] + c[-s] + c[s]) +
+         2.0 * (c[-s - 1] + c[-s + 1] + c[s - 1] + c[s + 1]) + (c[-2] + c[2] + c[-2 * s] + c[2 * s]);
+}
+
+// The contributions of the second differences along one axis through the cell:
+// centres p-1, p, p+1 of that axis, counted when they lie in [1, side-2].
+inline void axis_terms(const double* c, std::ptrdiff_t step, int pos, int side, ThinPlateRow& row) {
+  if (pos - 1 >= 1) {
+    row.az += c[-2 * step] - 2.0 * c[-step] + c[0];
+    row.diag += 1.0;
+  }
+  if (pos >= 1 && pos <= side - 2) {
+    row.az += -2.0 * (c[-step] - 2.0 * c[0] + c[step]);
+    row.diag += 4.0;
+  }
+  if (pos + 1 <= side - 2) {
+    row.az += c[0] - 2.0 * c[step] + c[2 * step];
+    row.diag += 1.0;
+  }
+}
+
+}  // namespace
+
+ThinPlateRow thin_plate_row(const double* z, int side, int x, int y) {
+  const std::ptrdiff_t s = side;
+  const double* c = z + static_cast<std::ptrdiff_t>(y) * s + x;
+  ThinPlateRow row;
+  axis_terms(c, 1, x, side, row);
+  axis_terms(c, s, y, side, row);
+  // 2×2 blocks with top-left (bx, by); the cell's sign is + on the block's
+  // main diagonal, - on the other. Weight 2 for the mixed term.
+  for (int dy = -1; dy <= 0; ++dy) {
+    if (y + dy < 0 || y + dy > side - 2) continue;
+    for (int dx = -1; dx <= 0; ++dx) {
+      if (x + dx < 0 || x + dx > side - 2) continue;
+      const double* b = c + dy * s + dx;
+      const double t = b[0] - b[1] - b[s] + b[s + 1];
+      const double sign = (dx == dy) ? 1.0 : -1.0;
+      row.az += 2.0 * sign * t;
+      row.diag += 2.0;
+    }
+  }
+  return row;
+}
+
+
+namespace {
+
+// One Gauss-Seidel/SOR update of every cell of a run of interior cells
+// [x0, x1) on row y. The left neighbours just updated are carried in
+// registers: the loop-carried chain is then one multiply-add per cell.
+// With springs (soft data term) the diagonal is 20 + spring and the target
+// joins the right-hand side.
+void relax_interior_run(Lattice& lat, std::size_t i0, int count, const double* rhs, double omega) {
+  const std::ptrdiff_t s = lat.side;
+  double* c = lat.z.data() + i0;
+  const double* spring = lat.spring.empty() ? nullptr : lat.spring.data() + i0;
+  const double* target = lat.target.empty() ? nullptr : lat.target.data() + i0;
+  double w2 = c[-2], w1 = c[-1];
+  for (int t = 0; t < count; ++t, ++c) {
+    double b = rhs ? rhs[i0 + t] : 0.0;
+    double inv = omega / 20.0;
+    if (spring) {
+      b += spring[t] * target[t];
+      inv = omega / (20.0 + spring[t]);
+    }
+    // Everything but the left neighbour, which is on the chain: written so the
+    // chain is one multiply-add (the compiler may not reassociate).
+    const double rest = 8.0 * (c[1] + c[-s] + c[s]) - 2.0 * (c[-s - 1] + c[-s + 1] + c[s - 1] + c[s + 1]) -
+                        (c[2] + c[-2 * s] + c[2 * s]) + b - w2;
+    const double pre = (1.0 - omega) * c[0] + inv * rest;
+    const double zn = pre + (8.0 * inv) * w1;
+    c[0] = zn;
+    w2 = w1;
+    w1 = zn;
+  }
+}
+
+void relax_border_cell(Lattice& lat, const double* rhs, int x, int y, double omega) {
+  const std::size_t i = lat.index(x, y);
+  ThinPlateRow r = thin_plate_row(lat.z.data(), lat.side, x, y);
+  if (!lat.spring.empty()) {
+    r.az += lat.spring[i] * (lat.z[i] - lat.target[i]);
+    r.diag += lat.spring[i];
+  }
+  if (r.diag > 0) lat.z[i] += omega * ((rhs ? rhs[i] : 0.0) - r.az) / r.diag;
+}
+
+}  // namespace
+
+void relax(Lattice& lat, const double* rhs, int sweeps, double omega) {
+  const int side = lat.side;
+  for (int k = 0; k < sweeps; ++k)
+    for (const Span& sp : lat.spans) {
+      if (sp.y < 2 || sp.y > side - 3) {
+        for (int x = sp.x0; x < sp.x1; ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
+        continue;
+      }
+      // Split the run into border cells on the left, interior, border on the right.
+      const int a = std::max(sp.x0, 2), b = std::min(sp.x1, side - 2);
+      for (int x = sp.x0; x < std::min(sp.x1, 2); ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
+      if (b > a) relax_interior_run(lat, lat.index(a, sp.y), b - a, rhs, omega);
+      for (int x = std::max(sp.x0, side - 2); x < sp.x1; ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
+    }
+}
+
+double residual_at(const Lattice& lat, const double* rhs, int x, int y) {
+  const int side = lat.side;
+  const std::size_t i = lat.index(x, y);
+  const bool inside = x >= 2 && y >= 2 && x <= side - 3 && y <= side - 3;
+  const double az = inside ? interior_az(lat.z.data(), side, i) : thin_plate_row(lat.z.data(), side, x, y).az;
+  return (rhs ? rhs[i] : 0.0) - az;
+}
+
+void residual(const Lattice& lat, const double* rhs, std::vector<double>& r) {
+  for (const Span& sp : lat.spans)
+    for (int x = sp.x0; x < sp.x1; ++x) r[lat.index(x, sp.y)] = residual_at(lat, rhs, x, sp.y);
+}
+
+}  // namespace mcmd
