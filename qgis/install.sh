@@ -35,6 +35,11 @@ esac
 dest_dir="${QGIS_PLUGINS_DIR:-$base/profiles/$profile/python/plugins}"
 dest="$dest_dir/mcmd_provider"
 
+if [ "$link" -eq 1 ] && [ -n "$cli" ]; then
+  echo "install.sh: error: --link with --cli would copy the tool into the source tree;" \
+       "set its path in Settings > Options > Processing > Providers > MCMD void fill instead" >&2
+  exit 2
+fi
 if [ -z "$cli" ] && [ "$link" -eq 0 ] && [ -x "$here/../build/bin/mcmd_fillnodata" ]; then
   cli="$here/../build/bin/mcmd_fillnodata"
 fi
