@@ -44,10 +44,14 @@ DatasetPtr open_raster(const std::string& path, bool update, const char* role) {
   if (VSIStatL(path.c_str(), &st) != 0)
     throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "': no such file");
   const unsigned flags = GDAL_OF_RASTER | (update ? GDAL_OF_UPDATE : GDAL_OF_READONLY);
+  CPLErrorReset();
   DatasetPtr ds(GDALDataset::Open(path.c_str(), flags));
-  if (!ds)
-    throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "' as a raster" +
-                                       (update ? " for update" : "") + ": " + CPLGetLastErrorMsg());
+  if (!ds) {
+    const std::string why = CPLGetLastErrorMsg();
+    throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "'" +
+                                       (update ? " for update" : "") + ": " +
+                                       (why.empty() ? "not a raster format GDAL can read" : why));
+  }
   if (ds->GetRasterCount() == 0)
     throw Failure(CPLE_OpenFailed, std::string(role) + " '" + path + "' has no raster band");
   return ds;
@@ -158,13 +162,25 @@ CPLStringList creation_options(const Args& args, GDALDriver* driver, ErrorLog& l
   return co;
 }
 
-// A MEM copy of `src`. MEM drops the IMAGE_STRUCTURE domain, so signed bytes
-// (GDAL < 3.7) are marked again for the fill and for the output driver.
+// What a MEM CreateCopy does not carry over: description, unit, offset/scale.
+void copy_band_info(GDALRasterBand& from, GDALRasterBand& to) {
+  to.SetDescription(from.GetDescription());
+  if (const char* unit = from.GetUnitType(); unit && *unit) to.SetUnitType(unit);
+  int has = FALSE;
+  const double offset = from.GetOffset(&has);
+  if (has) to.SetOffset(offset);
+  const double scale = from.GetScale(&has);
+  if (has) to.SetScale(scale);
+}
+
+// A MEM copy of `src`. The copy drops band descriptions, units and the
+// IMAGE_STRUCTURE domain: they and signed bytes (GDAL < 3.7) are set again.
 DatasetPtr work_copy(GDALDataset& src) {
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
   DatasetPtr work(mem->CreateCopy("", &src, FALSE, nullptr, nullptr, nullptr));
   if (!work) throw Failure(CPLE_OutOfMemory, std::string("cannot copy the raster to memory: ") + CPLGetLastErrorMsg());
   for (int b = 1; b <= src.GetRasterCount(); ++b) {
+    copy_band_info(*src.GetRasterBand(b), *work->GetRasterBand(b));
     const char* pt = src.GetRasterBand(b)->GetMetadataItem("PIXELTYPE", "IMAGE_STRUCTURE");
     if (pt && EQUAL(pt, "SIGNEDBYTE"))
       work->GetRasterBand(b)->SetMetadataItem("PIXELTYPE", "SIGNEDBYTE", "IMAGE_STRUCTURE");

@@ -63,9 +63,9 @@ void fill_band(GDALRasterBand& band, const FillRequest& request, const Options& 
                const ProgressFn& progress) {
   const PixelType type = pixel_type_of(band);
   const Window win{0, 0, band.GetXSize(), band.GetYSize()};
-  report(progress, 0.0);
   const WindowData data = read_window(band, type, request.masks, win, request.use_nodata);
   check_fillable(data, request);
+  report(progress, 0.0);
   if (data.void_count == 0) {
     report(progress, 1.0);
     return;

@@ -21,9 +21,18 @@ std::string one_line(std::string s) {
 
 extern "C" void on_interrupt(int) { mcmd::cli::request_interrupt(); }
 
+bool g_progress_shown = false;
+
+// GDAL's terminal progress; remembers that a line was started.
+int CPL_STDCALL term_progress(double f, const char* msg, void* arg) {
+  g_progress_shown = true;
+  return GDALTermProgress(f, msg, arg);
+}
+
 int fail(const std::string& msg) {
+  if (g_progress_shown) std::fputs("\n", stdout);  // end the dots before the error line
   std::fflush(stdout);
-  std::fprintf(stderr, "%smcmd_fillnodata: error: %s\n", "", one_line(msg).c_str());
+  std::fprintf(stderr, "mcmd_fillnodata: error: %s\n", one_line(msg).c_str());
   return 1;
 }
 
@@ -39,7 +48,7 @@ int main(int argc, char** argv) {
     const mcmd::cli::Args args = mcmd::cli::parse_args(argc, argv);
     if (args.help) return std::fputs(mcmd::cli::help_text().c_str(), stdout) < 0;
     if (args.version) return std::fputs(mcmd::cli::version_text().c_str(), stdout) < 0;
-    mcmd::cli::run(args, log, args.quiet ? nullptr : GDALTermProgress);
+    mcmd::cli::run(args, log, args.quiet ? nullptr : term_progress);
     return 0;
   } catch (const std::exception& e) {
     return fail(e.what());

@@ -120,7 +120,7 @@ std::vector<double> band_data(const RasterSpec& s, int b) {
     for (int x = 0; x < s.width; ++x) {
       double z = s.base + s.scale * terrain(x + 3 * b, y, s.width, s.height);
       if (!GDALDataTypeIsFloating(s.type)) z = std::round(z);
-      if (is_test_void(x + (b - 1) * 4, y, s.width, s.height)) z = s.nan_voids ? nan : s.nodata.value_or(nan);
+      if (s.voids && is_test_void(x + (b - 1) * 4, y, s.width, s.height)) z = s.nan_voids ? nan : s.nodata.value_or(nan);
       v[static_cast<std::size_t>(y) * s.width + x] = z;
     }
   return v;

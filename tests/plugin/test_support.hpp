@@ -45,6 +45,7 @@ struct RasterSpec {
   int height = 45;
   int bands = 1;
   std::optional<double> nodata = -32768.0;
+  bool voids = true;             // punch the test voids (is_test_void)
   bool nan_voids = false;        // write NaN in voids (float types)
   bool signed_byte = false;      // GDT_Byte with PIXELTYPE=SIGNEDBYTE
   double base = 0.0;             // terrain = base + scale · smooth(x, y), smooth in [0, 1]

@@ -1,0 +1,109 @@
+// Bad input: non-zero exit, exactly one "mcmd_fillnodata: error: ..." line on
+// stderr, no output or temporary file left, the source untouched.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "test_support.hpp"
+
+namespace mcmd::test {
+namespace {
+
+struct ErrorCase {
+  const char* name;
+  // Arguments; "SRC", "DST", "MASK", "DIR" are replaced by paths in the test folder.
+  std::vector<std::string> args;
+  const char* expect_in_message;
+  const char* shell_prefix = "";
+  const char* src_kind = "peaks";  // peaks | all_nodata | no_nodata | text | missing | big
+};
+
+std::ostream& operator<<(std::ostream& os, const ErrorCase& c) { return os << c.name; }
+
+void make_source(const std::string& kind, const std::string& path) {
+  RasterSpec spec;
+  if (kind == "missing") return;
+  if (kind == "text") {
+    std::ofstream(path) << "this is not a raster\n";
+    return;
+  }
+  if (kind == "all_nodata") {
+    spec.base = -32768;
+    spec.scale = 0;
+  }
+  if (kind == "no_nodata") spec.nodata = std::nullopt;
+  if (kind == "big") {
+    spec.type = GDT_Float32;
+    spec.width = spec.height = 300;
+    spec.nodata = -9999.0;
+  }
+  make_raster(path, spec);
+}
+
+class CliErrors : public ::testing::TestWithParam<ErrorCase> {};
+
+TEST_P(CliErrors, OneLineNoOutputSourceUntouched) {
+  const ErrorCase& c = GetParam();
+  TempDir dir;
+  const std::string src = dir.file("src.tif"), dst = dir.file("dst.tif");
+  make_source(c.src_kind, src);
+  make_mask(dir.file("mask.tif"), 10, 10);  // wrong size on purpose
+  std::vector<std::string> args;
+  for (const std::string& a : c.args) {
+    if (a == "SRC") args.push_back(src);
+    else if (a == "DST") args.push_back(dst);
+    else if (a == "MASK") args.push_back(dir.file("mask.tif"));
+    else if (a == "NODIR") args.push_back(dir.file("no/such/dir/out.tif"));
+    else args.push_back(a);
+  }
+  const std::string before = file_exists(src) ? file_bytes(src) : "";
+  const auto listing = dir.listing();
+
+  const RunResult r = run_cli(args, c.shell_prefix);
+
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("mcmd_fillnodata: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(c.expect_in_message), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("100 - done"), std::string::npos);
+  EXPECT_FALSE(file_exists(dst));
+  EXPECT_EQ(dir.listing(), listing) << "a file was left behind";
+  if (file_exists(src)) {
+    EXPECT_EQ(file_bytes(src), before) << "source modified";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, CliErrors,
+    ::testing::Values(
+        ErrorCase{"MissingFile", {"SRC", "DST"}, "no such file", "", "missing"},
+        ErrorCase{"UnreadableFile", {"SRC", "DST"}, "cannot open", "", "text"},
+        ErrorCase{"BandOutOfRange", {"-b", "2", "SRC", "DST"}, "band 2 is out of range"},
+        ErrorCase{"BandZero", {"-b", "0", "SRC", "DST"}, "-b expects"},
+        ErrorCase{"UnknownFlag", {"-frobnicate", "SRC", "DST"}, "unknown option '-frobnicate'"},
+        ErrorCase{"MissingValue", {"SRC", "DST", "-H"}, "-H expects a value"},
+        ErrorCase{"HOutOfRange", {"-H", "1.5", "SRC", "DST"}, "H=1.5"},
+        ErrorCase{"NegativeRs", {"-rs", "-0.1", "SRC", "DST"}, "RS=-0.1"},
+        ErrorCase{"NonNumeric", {"-I", "steep", "SRC", "DST"}, "I=steep"},
+        ErrorCase{"TileNotPowerOfTwoPlusOne", {"-tile", "100", "SRC", "DST"}, "TILE_SIZE=100"},
+        ErrorCase{"ZeroThreads", {"-threads", "0", "SRC", "DST"}, "NUM_THREADS=0"},
+        ErrorCase{"UnknownMethod", {"-method", "kriging", "SRC", "DST"}, "METHOD=kriging"},
+        ErrorCase{"NegativeMaxDistance", {"-md", "-5", "SRC", "DST"}, "MAX_DISTANCE=-5"},
+        ErrorCase{"UnknownAlgorithmOption", {"-o", "FOO=1", "SRC", "DST"}, "unknown option 'FOO'"},
+        ErrorCase{"TooManyFiles", {"SRC", "DST", "DST"}, "too many file names"},
+        ErrorCase{"NoFile", {"-q"}, "missing src_file"},
+        ErrorCase{"AllNodata", {"SRC", "DST"}, "no valid cell", "", "all_nodata"},
+        ErrorCase{"AllNodataInPlace", {"SRC"}, "no valid cell", "", "all_nodata"},
+        ErrorCase{"NoNodataDefined", {"SRC", "DST"}, "nothing marks the voids", "", "no_nodata"},
+        ErrorCase{"NoNodataInPlace", {"SRC"}, "nothing marks the voids", "", "no_nodata"},
+        ErrorCase{"BadDriver", {"-of", "NoSuchFormat", "SRC", "DST"}, "unknown output format"},
+        ErrorCase{"ReadOnlyDriver", {"-of", "JDEM", "SRC", "DST"}, "cannot write rasters"},
+        ErrorCase{"BadCreationOption", {"-co", "COMPRESS=WHIZZ", "SRC", "DST"}, "invalid creation option"},
+        ErrorCase{"MaskSizeMismatch", {"-mask", "MASK", "SRC", "DST"}, "mask"},
+        ErrorCase{"MissingMask", {"-mask", "DST", "SRC"}, "no such file"},
+        ErrorCase{"OutputFolderMissing", {"SRC", "NODIR"}, "cannot write"},
+        ErrorCase{"DiskFull", {"-q", "SRC", "DST"}, "cannot write", "ulimit -f 64;", "big"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace mcmd::test
