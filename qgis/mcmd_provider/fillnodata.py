@@ -365,6 +365,9 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
                                 on_info=feedback.pushConsoleInfo,
                                 is_canceled=feedback.isCanceled)
         except tool.ToolError as err:
+            for line in err.lines:
+                if line != str(err):
+                    warn(line)
             removed = tool.remove_outputs(output, before)
             for path in removed:
                 feedback.pushInfo(self.tr('Removed {}').format(path))

@@ -22,7 +22,14 @@ ERROR_PREFIX = TOOL_NAME + ': error:'
 
 
 class ToolError(Exception):
-    """The tool could not be found, failed, or was cancelled."""
+    """The tool could not be found, failed, or was cancelled.
+
+    `lines` holds everything the tool wrote on stderr (warnings before the error).
+    """
+
+    def __init__(self, message, lines=()):
+        super().__init__(message)
+        self.lines = list(lines)
 
 
 def plugin_version():
@@ -239,13 +246,13 @@ def run(args, on_progress=None, on_info=None, is_canceled=None, poll_s=0.05):
 
     err_lines = [line.rstrip() for line in err_text.splitlines() if line.strip()]
     if canceled:
-        raise ToolError(f'{TOOL_NAME} was canceled.')
+        raise ToolError(f'{TOOL_NAME} was canceled.', err_lines)
     if proc.returncode != 0:
         error = next((line for line in reversed(err_lines) if line.startswith(ERROR_PREFIX)), None)
         if error is None:
             error = err_lines[-1] if err_lines else (
                 f'{TOOL_NAME} failed with exit status {proc.returncode} and no message')
-        raise ToolError(error)
+        raise ToolError(error, err_lines)
     return err_lines
 
 
@@ -267,7 +274,7 @@ def remove_outputs(path, before):
     stem = os.path.splitext(base)[0]
     removed = []
     for name in snapshot(directory) - before:
-        if name == base or name.startswith(base) or name.startswith(stem + '.') or base in name:
+        if name.startswith((base, stem + '.', '.' + base, '.' + stem + '.')):
             full = os.path.join(directory, name)
             try:
                 if os.path.isdir(full) and not os.path.islink(full):

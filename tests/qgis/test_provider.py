@@ -302,8 +302,8 @@ def test_remove_outputs_takes_only_what_the_run_left(tmp_path):
     (tmp_path / 'other.tif').write_text('unrelated')
     before = snapshot(str(tmp_path))
     for name in ['filled.mcmd-tmp-4242.tif', 'filled.mcmd-tmp-4242.tif.aux.xml', 'filled.tif',
-                 'unrelated-new.tif']:
+                 'unrelated-new.tif', 'prefilled.tif']:
         (tmp_path / name).write_text('x')
     remove_outputs(str(tmp_path / 'filled.tif'), before)
     assert sorted(os.listdir(tmp_path)) == ['filled.tif.aux.xml', 'other.tif',
-                                            'unrelated-new.tif']
+                                            'prefilled.tif', 'unrelated-new.tif']
