@@ -57,10 +57,11 @@ TEST(CliModes, MaskFileMarksTheVoids) {
   for (int y = 0; y < spec.height; ++y)
     for (int x = 0; x < spec.width; ++x) {
       const std::size_t i = static_cast<std::size_t>(y) * spec.width + x;
-      if (is_test_void(x, y, spec.width, spec.height))
+      if (is_test_void(x, y, spec.width, spec.height)) {
         ASSERT_GT(out[i], 0.0) << "void not filled at " << x << "," << y;
-      else
+      } else {
         ASSERT_EQ(out[i], in[i]);
+      }
     }
 }
 
