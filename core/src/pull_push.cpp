@@ -18,7 +18,7 @@ PullLevel restrict_level(int fine_side, Weight weight, Mean mean) {
   static constexpr double k[3] = {0.5, 1.0, 0.5};
   for (int j = 0; j < c.side; ++j)
     for (int i = 0; i < c.side; ++i) {
-      double sw = 0.0, sm = 0.0;
+      double sw = 0.0, sm = 0.0, sk = 0.0;
       for (int dy = -1; dy <= 1; ++dy) {
         const int y = 2 * j + dy;
         if (y < 0 || y >= fine_side) continue;
@@ -26,6 +26,7 @@ PullLevel restrict_level(int fine_side, Weight weight, Mean mean) {
           const int x = 2 * i + dx;
           if (x < 0 || x >= fine_side) continue;
           const std::size_t fi = static_cast<std::size_t>(y) * fine_side + x;
+          sk += k[dx + 1] * k[dy + 1];
           const double w = k[dx + 1] * k[dy + 1] * weight(fi);
           if (w == 0.0) continue;
           sw += w;
@@ -34,7 +35,7 @@ PullLevel restrict_level(int fine_side, Weight weight, Mean mean) {
       }
       const std::size_t ci = static_cast<std::size_t>(j) * c.side + i;
       if (sw > 0) c.mean[ci] = sm / sw;
-      c.weight[ci] = std::min(1.0, sw);
+      c.weight[ci] = sw / sk;
     }
   return c;
 }

@@ -22,8 +22,9 @@
 // The thin-plate energy keeps only the second differences that fit in the grid
 // (natural boundary), so voids at the border stay bounded. Work runs over the
 // runs of free cells only, so a raster with few voids is cheap. Everything is
-// computed relative to the mean of the constraints (translation invariance and
-// conditioning), single-threaded and in a fixed order (deterministic).
+// computed relative to the least-squares plane of the constraints (exact on
+// planes, translation invariance, conditioning), single-threaded and in a
+// fixed order (deterministic).
 #include "mcmd/thin_plate.hpp"
 
 #include <algorithm>
@@ -42,28 +43,54 @@ namespace mcmd {
 
 namespace {
 
-double constraint_mean(const Grid& grid) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < grid.cell_count(); ++i)
-    if (is_constraint(grid.states()[i])) {
-      sum += grid.elevations()[i];
-      ++n;
-    }
-  return n ? sum / static_cast<double>(n) : 0.0;
+// The least-squares plane through the constraint cells (the mean when they are
+// collinear). The thin-plate energy ignores planes, so working on z - plane
+// changes nothing in the limit, but makes every stage exact on planes and
+// keeps the numbers small (fill(z + c) = fill(z) + c up to rounding).
+struct Plane {
+  double c = 0.0, cx = 0.0, cy = 0.0, x0 = 0.0, y0 = 0.0;
+  double at(int x, int y) const { return c + cx * (x - x0) + cy * (y - y0); }
+};
+
+Plane constraint_plane(const Grid& grid) {
+  double n = 0, sx = 0, sy = 0, sz = 0;
+  const int side = grid.side();
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x)
+      if (is_constraint(grid.state(x, y))) {
+        n += 1; sx += x; sy += y; sz += grid.z(x, y);
+      }
+  Plane p;
+  if (n == 0) return p;
+  p.x0 = sx / n; p.y0 = sy / n; p.c = sz / n;
+  double xx = 0, xy = 0, yy = 0, xz = 0, yz = 0;
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x)
+      if (is_constraint(grid.state(x, y))) {
+        const double dx = x - p.x0, dy = y - p.y0, dz = grid.z(x, y) - p.c;
+        xx += dx * dx; xy += dx * dy; yy += dy * dy; xz += dx * dz; yz += dy * dz;
+      }
+  const double det = xx * yy - xy * xy;
+  if (det > 1e-9 * (xx * yy + 1e-300)) {
+    p.cx = (yy * xz - xy * yz) / det;
+    p.cy = (xx * yz - xy * xz) / det;
+  }
+  return p;
 }
 
 // levels[k] has side 2^k + 1; levels.back() is the grid, relative to `ref`.
-std::vector<Lattice> build_hierarchy(const Grid& grid, double ref) {
+std::vector<Lattice> build_hierarchy(const Grid& grid, const Plane& ref) {
   Lattice finest;
   finest.side = grid.side();
   finest.z.assign(grid.cell_count(), 0.0);
   finest.pinned.assign(grid.cell_count(), 0);
-  for (std::size_t i = 0; i < grid.cell_count(); ++i)
-    if (is_constraint(grid.states()[i])) {
-      finest.pinned[i] = 1;
-      finest.z[i] = grid.elevations()[i] - ref;
-    }
+  for (int y = 0; y < grid.side(); ++y)
+    for (int x = 0; x < grid.side(); ++x)
+      if (is_constraint(grid.state(x, y))) {
+        const std::size_t i = grid.index(x, y);
+        finest.pinned[i] = 1;
+        finest.z[i] = grid.z(x, y) - ref.at(x, y);
+      }
   finest.spans = free_spans(finest.pinned, finest.side);
   std::vector<Lattice> levels;
   levels.push_back(std::move(finest));
@@ -104,11 +131,29 @@ void start_from_coarser(Lattice& lat, const Lattice& coarse, const PullLevel* es
     }
 }
 
-// Soft estimates as springs on a coarse level's free cells.
+// Soft estimates as springs on a coarse level's free cells, as stiff as the
+// density of constraints they summarise. Only where the lattice itself has no
+// constraint next to the cell: there the estimate stands for constraints the
+// lattice cannot hold (scattered samples); beside pinned cells (void rims) the
+// lattice already knows the data and a blurred estimate only flattens the fill.
 void attach_springs(Lattice& lat, const PullLevel& est, double strength) {
-  lat.spring.resize(est.weight.size());
-  for (std::size_t i = 0; i < est.weight.size(); ++i) lat.spring[i] = strength * est.weight[i];
+  lat.spring.assign(est.weight.size(), 0.0);
   lat.target = est.mean;
+  const int side = lat.side;
+  for (const Span& sp : lat.spans)
+    for (int x = sp.x0; x < sp.x1; ++x) {
+      bool near_pinned = false;
+      for (int dy = -1; dy <= 1 && !near_pinned; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = sp.y + dy;
+          if (nx >= 0 && ny >= 0 && nx < side && ny < side && lat.pinned[lat.index(nx, ny)]) {
+            near_pinned = true;
+            break;
+          }
+        }
+      const std::size_t i = lat.index(x, sp.y);
+      if (!near_pinned) lat.spring[i] = strength * est.weight[i];
+    }
 }
 
 int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
@@ -121,7 +166,7 @@ int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
 
 void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,
                                const ProgressFn& progress) {
-  const double ref = constraint_mean(grid);
+  const Plane ref = constraint_plane(grid);
   std::vector<Lattice> levels = build_hierarchy(grid, ref);
   const int finest = static_cast<int>(levels.size()) - 1;
   if (levels[finest].spans.empty()) return;
@@ -157,9 +202,8 @@ void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinP
   Lattice& fill = levels[finest];
   if (params.rs_auto || params.rs > 0) add_roughness(fill, grid, params);
 
-  std::vector<double>& z = grid.elevations();
-  for (std::size_t i = 0; i < z.size(); ++i)
-    if (!fill.pinned[i]) z[i] = fill.z[i] + ref;
+  for (const Span& sp : fill.spans)
+    for (int x = sp.x0; x < sp.x1; ++x) grid.z(x, sp.y) = fill.z[fill.index(x, sp.y)] + ref.at(x, sp.y);
   report(progress, 1.0);
 }
 

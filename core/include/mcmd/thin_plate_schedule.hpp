@@ -18,7 +18,7 @@ struct ThinPlateSchedule {
   int max_sweeps = 32;     // cap on cascade sweeps per level
   double omega = 1.0;      // SOR factor of the cascade sweeps
   CascadeStart start = CascadeStart::blend;
-  double spring = 10.0;    // strength of the soft estimates on coarse cascade levels (0: none)
+  double spring = 300.0;   // spring per unit constraint density on coarse cascade levels (0: none)
   int v_cycles = 3;        // at the finest level, after the cascade
   VCycleSchedule vcycle{};
 };
