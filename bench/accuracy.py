@@ -74,7 +74,8 @@ def parse_args(argv=None):
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs per fill; the median wall time is reported (3)")
     ap.add_argument("--force", action="store_true", help="ignore cached results")
-    ap.add_argument("--work", default=os.path.join(V.BENCH_DIR, "work", "accuracy"))
+    ap.add_argument("--work", default=None,
+                    help="work folder (default bench/work/accuracy, or bench/work/accuracy-quick)")
     ap.add_argument("--out", default=None, help="markdown file (default bench/ACCURACY.md)")
     ap.add_argument("--png-dir", default=None, help="PNG folder (default bench/accuracy)")
     ap.add_argument("--no-png", action="store_true")
@@ -104,6 +105,7 @@ def parse_args(argv=None):
     a.dems, a.reals = dems, reals
     a.out = a.out or os.path.join(V.BENCH_DIR, "ACCURACY.md")
     a.png_dir = a.png_dir or os.path.join(V.BENCH_DIR, "accuracy")
+    a.work = a.work or os.path.join(V.BENCH_DIR, "work", "accuracy" + ("-quick" if a.quick else ""))
     a.mcmd = os.path.abspath(a.mcmd)
     return a
 
@@ -135,8 +137,9 @@ def main(argv=None):
         log("WARNING: " + msg)
         if skipped:
             log("WARNING: not run: " + ", ".join(skipped))
-    mcmd_key = "mcmd-" + V.binary_id(a.mcmd)
-    gkey = V.gdal_id()
+    # every result (GDAL's too) is keyed on the mcmd binary, so that a report
+    # always compares runs made in the same session with the same binary
+    run_key = f"mcmd-{V.binary_id(a.mcmd)} {V.gdal_id()}"
 
     cases = []   # (case_id, dem, kind, seed, input, truth or None)
     for dem in a.dems:
@@ -173,9 +176,8 @@ def main(argv=None):
         for m in methods:
             out = os.path.join(work, "out", f"{cid}__{m}.tif")
             cmd = V.fill_cmd(m, inp, out, max(w, h), a.mcmd, seed=seed)
-            key = mcmd_key if m in V.MCMD_METHODS else gkey
             res = os.path.join(work, "results", f"{cid}__{m}.json")
-            results[(cid, m)] = V.cached_fill(res, cmd, key, out, a.timeout, evaluate,
+            results[(cid, m)] = V.cached_fill(res, cmd, run_key, out, a.timeout, evaluate,
                                               force=a.force, log=log, repeat=a.repeat)
 
     pngs = {} if a.no_png else make_pngs(a, cases, methods, work)
@@ -197,7 +199,7 @@ def make_pngs(a, cases, methods, work):
         bbox = V.largest_void_bbox(~inr.valid())
         if bbox is None:
             continue
-        main, detail = V.void_window(bbox, inr.shape)
+        main, detail = V.void_window(bbox, inr.shape, void=~inr.valid(), data=inr.data)
         panels = [("input", inp)]
         if tp:
             panels.append(("truth", tp))

@@ -77,6 +77,8 @@ def parse_args(argv=None):
                     help="case kinds to run (kept3,blobs,real)")
     ap.add_argument("--no-big-kept3", action="store_true",
                     help="skip kept3 on the 10801x4801 mosaic")
+    ap.add_argument("--runs", default=",".join(RUNS),
+                    help="which of the main runs to do (default: " + ",".join(RUNS) + ")")
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--timeout-gdal", type=float, default=900,
                     help="per-run timeout for gdal_fillnodata, s (900); a timeout is "
@@ -90,12 +92,17 @@ def parse_args(argv=None):
                          "reported (3). Larger files run once.")
     ap.add_argument("--keep", action="store_true", help="keep output rasters in the work dir")
     ap.add_argument("--force", action="store_true", help="ignore cached results")
-    ap.add_argument("--work", default=os.path.join(V.BENCH_DIR, "work", "speed"))
+    ap.add_argument("--work", default=None,
+                    help="work folder (default bench/work/speed, or bench/work/speed-quick)")
     ap.add_argument("--out", default=None, help="markdown file (default bench/RESULTS.md)")
     ap.add_argument("--png-dir", default=None, help="PNG folder (default bench/speed)")
     ap.add_argument("--no-png", action="store_true")
     a = ap.parse_args(argv)
     a.kinds = [k.strip() for k in a.kinds.split(",") if k.strip()]
+    a.runs = [r.strip() for r in a.runs.split(",") if r.strip()]
+    for r in a.runs:
+        if r not in RUNS:
+            ap.error(f"unknown run {r!r}")
     cases = []   # (case_id, dem, kind)
     for dem, kinds in TRUTH_CASES:
         for k in kinds:
@@ -112,6 +119,7 @@ def parse_args(argv=None):
     a.cases = cases
     a.out = a.out or os.path.join(V.BENCH_DIR, "RESULTS.md")
     a.png_dir = a.png_dir or os.path.join(V.BENCH_DIR, "speed")
+    a.work = a.work or os.path.join(V.BENCH_DIR, "work", "speed" + ("-quick" if a.quick else ""))
     a.mcmd = os.path.abspath(a.mcmd)
     return a
 
@@ -125,12 +133,13 @@ def main(argv=None):
     os.makedirs(a.png_dir, exist_ok=True)
 
     ok, msg = V.mcmd_status(a.mcmd)
-    runs = dict(RUNS)
+    runs = {k: v for k, v in RUNS.items() if k in a.runs}
     if not ok:
         log("WARNING: " + msg)
         runs = {k: v for k, v in runs.items() if v is None}
-    mcmd_key = "mcmd-" + V.binary_id(a.mcmd)
-    gkey = V.gdal_id()
+    # every result (GDAL's too) is keyed on the mcmd binary, so that a report
+    # always compares runs made in the same session with the same binary
+    run_key = f"mcmd-{V.binary_id(a.mcmd)} {V.gdal_id()}"
 
     results = {}   # (cid, run) -> dict
     infos = {}
@@ -153,7 +162,7 @@ def main(argv=None):
         info["void_fraction"] = info["void_cells"] / removed.size
         truth = V.read_raster(truth_path).data if truth_path else None
         bbox = V.largest_void_bbox(removed) if kind != "kept3" else None
-        win = V.void_window(bbox, removed.shape) if bbox else None
+        win = V.void_window(bbox, removed.shape, void=removed, data=inr.data) if bbox else None
         info["bbox"], info["window"] = bbox, win
         infos[cid] = info
         png = not a.no_png and win is not None
@@ -177,7 +186,7 @@ def main(argv=None):
             return r
 
         todo = list(runs.items())
-        if ok and not a.no_extras:
+        if ok and not a.no_extras and "mcmd" in runs:
             if cid in [d for d in DET_CASES] or (a.quick and kind == "blobs"):
                 todo.append(("mcmd-t2", ["-threads", "2"]))
             if kind == "blobs":
@@ -186,13 +195,13 @@ def main(argv=None):
             out = os.path.join(work, "out", f"{cid}__{name}.tif")
             if extra is None:
                 cmd = V.fill_cmd("gdal-si2", inp, out, max(w, h), a.mcmd)
-                key, tmo = gkey, a.timeout_gdal
+                tmo = a.timeout_gdal
             else:
                 cmd = [a.mcmd, "-q"] + extra + [inp, out]
-                key, tmo = mcmd_key, a.timeout_mcmd
+                tmo = a.timeout_mcmd
             res = os.path.join(work, "results", f"{cid}__{name}.json")
             results[(cid, name)] = V.cached_fill(
-                res, cmd, key, out, tmo, lambda p, n=name: evaluate(p, n),
+                res, cmd, run_key, out, tmo, lambda p, n=name: evaluate(p, n),
                 force=a.force, log=log, repeat=a.repeat if w * h <= 4_000_000 else 1)
             if not a.keep and os.path.exists(out):
                 os.unlink(out)   # failed runs may leave partial files
@@ -339,8 +348,8 @@ def write_report(a, runs, results, infos, mcmd_msg, elapsed):
         L.append("## Hillshades of the largest filled void")
         L.append("")
         L.append("gdaldem hillshade of a window around the largest void (≤ 256² PNG; larger "
-                 "windows are averaged down, with a full-resolution 256² detail at the void's "
-                 "centre). Black = nodata.")
+                 "windows are averaged down, with a full-resolution 256² detail on the void "
+                 "border where the terrain around it has most relief). Black = nodata.")
         L.append("")
         for cid, dem, kind in a.cases:
             panels = []

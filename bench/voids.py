@@ -550,18 +550,56 @@ def largest_void_bbox(void: np.ndarray) -> tuple[int, int, int, int] | None:
     return x0, y0, int(math.ceil(maxx)) - x0, int(math.ceil(maxy)) - y0
 
 
-def void_window(bbox, shape, max_size: int = PNG_MAX, margin: float = 0.25):
+def _border_point(void: np.ndarray, bbox, data: np.ndarray | None = None):
+    """A void-border cell (a void cell with a valid 4-neighbour) inside
+    ``bbox``: with ``data``, the one (of ~500 evenly sampled) whose valid
+    surroundings have the most relief (so the detail crop shows terrain, not
+    sea); else the one nearest to the bbox centre. None if there is none."""
+    x0, y0, bw, bh = bbox
+    sub = void[y0:y0 + bh, x0:x0 + bw]
+    edge = np.zeros_like(sub)
+    edge[1:, :] |= sub[1:, :] & ~sub[:-1, :]
+    edge[:-1, :] |= sub[:-1, :] & ~sub[1:, :]
+    edge[:, 1:] |= sub[:, 1:] & ~sub[:, :-1]
+    edge[:, :-1] |= sub[:, :-1] & ~sub[:, 1:]
+    ys, xs = np.nonzero(edge)
+    if ys.size == 0:
+        return None
+    if data is not None and ys.size > 1:
+        idx = np.unique(np.linspace(0, ys.size - 1, min(500, ys.size)).astype(int))
+        best, best_s = None, -1.0
+        H, W = void.shape
+        for i in idx:
+            y, x = y0 + int(ys[i]), x0 + int(xs[i])
+            ya, yb, xa, xb = max(0, y - 48), min(H, y + 49), max(0, x - 48), min(W, x + 49)
+            win = data[ya:yb, xa:xb]
+            ok = ~void[ya:yb, xa:xb]
+            if ok.sum() < 16:
+                continue
+            sd = float(np.std(win[ok].astype(np.float64)))
+            if sd > best_s:
+                best_s, best = sd, (x, y)
+        if best is not None:
+            return float(best[0]), float(best[1])
+    d = (xs - bw / 2.0) ** 2 + (ys - bh / 2.0) ** 2
+    i = int(np.argmin(d))
+    return x0 + float(xs[i]), y0 + float(ys[i])
+
+
+def void_window(bbox, shape, max_size: int = PNG_MAX, margin: float = 0.25,
+                void: np.ndarray | None = None, data: np.ndarray | None = None):
     """A square-ish window around ``bbox`` (x0, y0, w, h) with a margin,
     clipped to the raster. If the window is larger than ``max_size`` it is
     kept whole and the PNG is downsampled (overview); ``detail`` is then a
-    full-resolution max_size² window at the void's centre."""
+    full-resolution max_size² window centred on a void border cell (given
+    ``void``, the mask; see _border_point), else on the void's centre."""
     H, W = shape
     x0, y0, bw, bh = bbox
     side = int(max(bw, bh) * (1 + 2 * margin)) + 8
     side = max(side, 64)
     cx, cy = x0 + bw / 2.0, y0 + bh / 2.0
 
-    def win(s):
+    def win(s, cx=cx, cy=cy):
         ww, hh = min(s, W), min(s, H)
         xo = int(round(cx - ww / 2.0))
         yo = int(round(cy - hh / 2.0))
@@ -570,7 +608,10 @@ def void_window(bbox, shape, max_size: int = PNG_MAX, margin: float = 0.25):
         return xo, yo, ww, hh
 
     main = win(side)
-    detail = win(max_size) if max(main[2], main[3]) > max_size else None
+    detail = None
+    if max(main[2], main[3]) > max_size:
+        bp = _border_point(void, bbox, data) if void is not None else None
+        detail = win(max_size, *bp) if bp else win(max_size)
     return main, detail
 
 
@@ -588,7 +629,7 @@ def hillshade_png(src_path: str, window, out_png: str, max_size: int = PNG_MAX) 
         kw.update(width=max(1, int(round(w / scale))), height=max(1, int(round(h / scale))),
                   resampleAlg="average")
     gdal.Translate(crop, src_path, **kw)
-    opts = {"computeEdges": True, "zFactor": 1.0}
+    opts = {"computeEdges": True, "zFactor": 2.0}   # -z 2: more contrast for artefacts
     if is_geographic(src_path):
         opts["scale"] = 111120.0
     gdal.DEMProcessing(shade, crop, "hillshade", **opts)
