@@ -198,12 +198,12 @@ void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinP
     report(progress, 0.4 + 0.4 * (c + 1) / schedule.v_cycles);
   }
 
-  // 4. Roughness on the smooth fill.
-  Lattice& fill = levels[finest];
-  if (params.rs_auto || params.rs > 0) add_roughness(fill, grid, params);
-
+  const Lattice& fill = levels[finest];
   for (const Span& sp : fill.spans)
     for (int x = sp.x0; x < sp.x1; ++x) grid.z(x, sp.y) = fill.z[fill.index(x, sp.y)] + ref.at(x, sp.y);
+
+  // 4. Roughness on the smooth fill.
+  if (params.rs_auto || params.rs > 0) add_roughness(grid, params);
   report(progress, 1.0);
 }
 

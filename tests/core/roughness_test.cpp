@@ -1,0 +1,128 @@
+// -rs auto / rs > 0 for the default method: deterministic per seed, zero at
+// constraints, and roughness close to the terrain's on a synthetic fBm DEM.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <random>
+
+#include "mcmd/fill.hpp"
+#include "mcmd/roughness.hpp"
+
+namespace {
+
+using mcmd::CellState;
+using mcmd::Grid;
+
+// fBm surface of Hurst exponent H by spectral synthesis: random-phase plane
+// waves, 2D power spectrum ∝ k^-(2H+2). Wave numbers are drawn log-uniformly
+// (density ∝ 1/k), so each wave carries variance ∝ k^-(2H+2)·k·k = k^-2H.
+Grid fbm(int n, double H, unsigned seed) {
+  Grid g(n);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double side = g.side();
+  for (int w = 0; w < 300; ++w) {
+    const double k = std::exp(std::log(1.0 / side) + u(rng) * (std::log(0.5) - std::log(1.0 / side)));
+    const double a = 2 * std::numbers::pi * u(rng), phase = 2 * std::numbers::pi * u(rng);
+    const double amp = 40.0 * std::pow(k * side, -H);
+    const double kx = 2 * std::numbers::pi * k * std::cos(a), ky = 2 * std::numbers::pi * k * std::sin(a);
+    for (int y = 0; y < g.side(); ++y)
+      for (int x = 0; x < g.side(); ++x) g.z(x, y) += amp * std::cos(kx * x + ky * y + phase);
+  }
+  for (int y = 0; y < g.side(); ++y)
+    for (int x = 0; x < g.side(); ++x) g.state(x, y) = CellState::known;
+  return g;
+}
+
+void punch_disc(Grid& g, double cx, double cy, double r) {
+  for (int y = 0; y < g.side(); ++y)
+    for (int x = 0; x < g.side(); ++x)
+      if (std::hypot(x - cx, y - cy) <= r) g.state(x, y) = CellState::unknown;
+}
+
+// Mean squared second difference (x and y) over cells whose 3-cell stencils
+// lie in the disc of radius r (or, with inside=false, outside radius r + 2).
+double curvature(const Grid& g, double cx, double cy, double r, bool inside) {
+  double s = 0;
+  int n = 0;
+  for (int y = 1; y < g.side() - 1; ++y)
+    for (int x = 1; x < g.side() - 1; ++x) {
+      const double d = std::hypot(x - cx, y - cy);
+      if (inside ? d > r - 1.5 : d < r + 2) continue;
+      const double dxx = g.z(x - 1, y) - 2 * g.z(x, y) + g.z(x + 1, y);
+      const double dyy = g.z(x, y - 1) - 2 * g.z(x, y) + g.z(x, y + 1);
+      s += dxx * dxx + dyy * dyy;
+      n += 2;
+    }
+  return s / n;
+}
+
+mcmd::FillParams auto_params(std::uint64_t seed) {
+  mcmd::FillParams p;
+  p.rs_auto = true;
+  p.seed = seed;
+  return p;
+}
+
+TEST(Roughness, AutoIsDeterministicPerSeed) {
+  Grid base = fbm(7, 0.7, 1);
+  punch_disc(base, 64, 64, 25);
+  Grid a = base, b = base, c = base;
+  mcmd::fill(a, auto_params(11));
+  mcmd::fill(b, auto_params(11));
+  mcmd::fill(c, auto_params(12));
+  EXPECT_EQ(std::memcmp(a.elevations().data(), b.elevations().data(), a.cell_count() * sizeof(double)), 0);
+  EXPECT_NE(std::memcmp(a.elevations().data(), c.elevations().data(), a.cell_count() * sizeof(double)), 0);
+  for (std::size_t i = 0; i < a.cell_count(); ++i)
+    if (mcmd::is_constraint(base.states()[i])) {
+      ASSERT_EQ(a.elevations()[i], base.elevations()[i]);
+    }
+}
+
+TEST(Roughness, EstimatesHOfAnFbmSurface) {
+  for (double H : {0.4, 0.8}) {
+    const mcmd::RoughnessModel m = mcmd::estimate_roughness(fbm(8, H, 2));
+    ASSERT_TRUE(m.valid);
+    EXPECT_NEAR(m.H, H, 0.15) << "true H " << H << " estimated " << m.H;
+  }
+}
+
+// Band: the fill's second-difference variance inside the void is within
+// [0.4, 2.5]× the terrain's around it (the smooth fill alone: < 0.1×).
+TEST(Roughness, AutoRoughnessMatchesTheTerrain) {
+  Grid truth = fbm(8, 0.6, 3);
+  Grid smooth = truth, rough = truth;
+  punch_disc(smooth, 128, 128, 40);
+  punch_disc(rough, 128, 128, 40);
+  mcmd::fill(smooth, {});
+  mcmd::fill(rough, auto_params(5));
+  const double terrain = curvature(truth, 128, 128, 40, false);
+  const double smooth_ratio = curvature(smooth, 128, 128, 40, true) / terrain;
+  const double rough_ratio = curvature(rough, 128, 128, 40, true) / terrain;
+  EXPECT_LT(smooth_ratio, 0.1);
+  EXPECT_GT(rough_ratio, 0.4);
+  EXPECT_LT(rough_ratio, 2.5);
+}
+
+TEST(Roughness, ManualAmplitudeScalesWithRs) {
+  Grid base = fbm(7, 0.7, 4);
+  punch_disc(base, 64, 64, 25);
+  Grid smooth = base, small = base, big = base;
+  mcmd::fill(smooth, {});
+  mcmd::FillParams p;
+  p.rs = 0.01;
+  mcmd::fill(small, p);
+  p.rs = 0.04;
+  mcmd::fill(big, p);
+  double ds = 0, db = 0;
+  for (std::size_t i = 0; i < base.cell_count(); ++i) {
+    ds = std::max(ds, std::abs(small.elevations()[i] - smooth.elevations()[i]));
+    db = std::max(db, std::abs(big.elevations()[i] - smooth.elevations()[i]));
+  }
+  EXPECT_GT(ds, 0.0);
+  EXPECT_NEAR(db / ds, 4.0, 1e-6);  // same noise, linear in rs
+}
+
+}  // namespace
