@@ -73,6 +73,10 @@ def parse_args(argv=None):
     ap.add_argument("--timeout", type=float, default=600, help="per-run timeout, s (600)")
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs per fill; the median wall time is reported (3)")
+    ap.add_argument("--mem-limit-mb", type=float, default=8192,
+                    help="address-space limit per run (RLIMIT_AS), MB; a run needing more "
+                         "fails and is recorded instead of exhausting the shared machine "
+                         "(8192; 0 = none)")
     ap.add_argument("--force", action="store_true", help="ignore cached results")
     ap.add_argument("--work", default=None,
                     help="work folder (default bench/work/accuracy, or bench/work/accuracy-quick)")
@@ -178,7 +182,8 @@ def main(argv=None):
             cmd = V.fill_cmd(m, inp, out, max(w, h), a.mcmd, seed=seed)
             res = os.path.join(work, "results", f"{cid}__{m}.json")
             results[(cid, m)] = V.cached_fill(res, cmd, run_key, out, a.timeout, evaluate,
-                                              force=a.force, log=log, repeat=a.repeat)
+                                              force=a.force, log=log, repeat=a.repeat,
+                                              mem_limit_mb=a.mem_limit_mb or None)
 
     pngs = {} if a.no_png else make_pngs(a, cases, methods, work)
     write_report(a, cases, methods, skipped, results, pngs, msg if not ok else None,

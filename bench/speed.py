@@ -90,6 +90,10 @@ def parse_args(argv=None):
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs per fill on files up to 4 M cells; the median time is "
                          "reported (3). Larger files run once.")
+    ap.add_argument("--mem-limit-mb", type=float, default=8192,
+                    help="address-space limit per run (RLIMIT_AS), MB; a run needing more "
+                         "fails and is recorded instead of exhausting the shared machine "
+                         "(8192; 0 = none)")
     ap.add_argument("--keep", action="store_true", help="keep output rasters in the work dir")
     ap.add_argument("--force", action="store_true", help="ignore cached results")
     ap.add_argument("--work", default=None,
@@ -202,7 +206,8 @@ def main(argv=None):
             res = os.path.join(work, "results", f"{cid}__{name}.json")
             results[(cid, name)] = V.cached_fill(
                 res, cmd, run_key, out, tmo, lambda p, n=name: evaluate(p, n),
-                force=a.force, log=log, repeat=a.repeat if w * h <= 4_000_000 else 1)
+                force=a.force, log=log, repeat=a.repeat if w * h <= 4_000_000 else 1,
+                mem_limit_mb=a.mem_limit_mb or None)
             if not a.keep and os.path.exists(out):
                 os.unlink(out)   # failed runs may leave partial files
     write_report(a, runs, results, infos, None if ok else msg, time.time() - t_start)

@@ -421,16 +421,28 @@ def parse_time_v(text: str) -> dict:
     return out
 
 
-def run_timed(cmd: list[str], timeout: float | None = None, env=None) -> dict:
+def _limit_as(mb):
+    def f():
+        import resource
+        b = int(mb) * 1024 * 1024
+        resource.setrlimit(resource.RLIMIT_AS, (b, b))
+    return f
+
+
+def run_timed(cmd: list[str], timeout: float | None = None, env=None,
+              mem_limit_mb: float | None = None) -> dict:
     """Run ``cmd`` under ``/usr/bin/time -v``. Returns rc, wall_s, rss_mb,
     user_s, sys_s, timed_out, stderr tail. On timeout the whole process group
-    is killed and ``timed_out`` is True (wall_s is then the timeout)."""
+    is killed and ``timed_out`` is True (wall_s is then the timeout).
+    ``mem_limit_mb`` caps the address space (RLIMIT_AS) so that a run that
+    would need more memory fails instead of pushing the machine into OOM."""
     with tempfile.NamedTemporaryFile("r", suffix=".time", delete=False) as tf:
         tpath = tf.name
     full = ["/usr/bin/time", "-v", "-o", tpath] + [str(c) for c in cmd]
     t0 = time.monotonic()
     p = subprocess.Popen(full, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                         text=True, start_new_session=True, env=env)
+                         text=True, start_new_session=True, env=env,
+                         preexec_fn=_limit_as(mem_limit_mb) if mem_limit_mb else None)
     timed_out = False
     try:
         so, se = p.communicate(timeout=timeout)
@@ -454,7 +466,7 @@ def run_timed(cmd: list[str], timeout: float | None = None, env=None) -> dict:
         res["time_v_wall_s"] = res.pop("wall_s")
     res["wall_s"] = elapsed
     res.update({"rc": p.returncode if not timed_out else None,
-                "timed_out": timed_out, "timeout_s": timeout,
+                "timed_out": timed_out, "timeout_s": timeout, "mem_limit_mb": mem_limit_mb,
                 "cmd": " ".join(str(c) for c in cmd),
                 "stderr": (se or "")[-2000:]})
     return res
@@ -714,7 +726,7 @@ def save_json(path, obj):
 
 def cached_fill(res_path: str, cmd: list[str], key: str, out_path: str,
                 timeout: float | None, evaluate, force: bool = False,
-                log=print, repeat: int = 1) -> dict:
+                log=print, repeat: int = 1, mem_limit_mb: float | None = None) -> dict:
     """Run one fill unless ``res_path`` already holds a result with the same
     ``key`` (binary hash / GDAL version + command line). ``evaluate(out_path)``
     returns the metrics dict merged into the result. Failed and timed-out runs
@@ -730,7 +742,7 @@ def cached_fill(res_path: str, cmd: list[str], key: str, out_path: str,
     for _ in range(max(1, repeat)):
         if os.path.exists(out_path):
             os.unlink(out_path)
-        r = run_timed(cmd, timeout=timeout)
+        r = run_timed(cmd, timeout=timeout, mem_limit_mb=mem_limit_mb)
         tries.append(r)
         if r["timed_out"] or r["rc"] != 0:
             break
@@ -753,6 +765,8 @@ def cached_fill(res_path: str, cmd: list[str], key: str, out_path: str,
     else:
         tail = (r.get("stderr") or "").strip().splitlines()
         r["error"] = f"rc={r['rc']}: " + (tail[-1] if tail else "no output")
+        if mem_limit_mb:
+            r["error"] += f" (address-space limit {mem_limit_mb:.0f} MB)"
     r["when"] = time.strftime("%Y-%m-%d %H:%M:%S")
     save_json(res_path, r)
     status = "ok" if r["ok"] else r.get("error", "failed")
