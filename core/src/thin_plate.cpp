@@ -9,11 +9,14 @@
 //     estimate (weighted mean + confidence), MDBU's role.
 //  2. Top-down cascade (cubic_prolong.cpp, biharmonic_relax.cpp): from the
 //     coarsest lattice (2×2) to the grid, each level's free cells start from the
-//     4-point cubic interpolation of the coarser level (blended with the soft
-//     estimate where that is confident), then a few Gauss-Seidel sweeps relax
-//     them towards the discrete thin-plate surface, more sweeps on coarse
-//     levels. Only cells that are constraints at that lattice position are
-//     pinned: pinning coarse estimates is what makes a dimple lattice.
+//     4-point cubic interpolation of the coarser level, then a few Gauss-Seidel
+//     sweeps relax them towards the discrete thin-plate surface (2 at the
+//     finest level, doubling per coarser level, at most 32). Only cells that
+//     are constraints at that lattice position are pinned: pinning coarse
+//     estimates is what makes a dimple lattice. On coarse levels the soft
+//     estimates act as springs (stiffness ∝ constraint density) away from
+//     pinned cells: they stand for the scattered samples a coarse lattice
+//     cannot hold.
 //  3. Multigrid (multigrid.cpp): V-cycles at the finest level finish the
 //     constrained thin-plate solve (constraint cells Dirichlet).
 //  4. Roughness (roughness.cpp): with rs > 0 or rs auto, a constrained
