@@ -19,7 +19,6 @@ GDAL) or the command line changes, or with --force.
 
 from __future__ import annotations
 
-import argparse
 import os
 import sys
 import time
@@ -49,20 +48,12 @@ LABEL = {
 }
 
 
-def log(*a):
-    print(*a, flush=True)
+log = V.log
 
 
 def parse_args(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--mcmd", default=V.DEFAULT_MCMD,
-                    help="path to mcmd_fillnodata (default: build/bin/mcmd_fillnodata)")
-    ap.add_argument("--quick", action="store_true",
-                    help="smoke run: 1 DEM (513^2), 1 seed, 1 real-void tile; "
-                         "writes bench/work/ACCURACY-quick.md, not bench/ACCURACY.md")
-    ap.add_argument("--only", action="append", default=[],
-                    help="restrict to DEMs whose name contains this (repeatable)")
+    ap = V.common_parser(__doc__, "smoke run: 1 DEM (513^2), 1 seed, 1 real-void tile; "
+                         "writes bench/work/ACCURACY-quick.md, not bench/ACCURACY.md", "restrict to DEMs whose name contains this (repeatable)")
     ap.add_argument("--methods", default=",".join(ALL_METHODS),
                     help="comma list from: " + ",".join(ALL_METHODS))
     ap.add_argument("--kinds", default="kept3,blobs", help="void kinds (kept3,blobs)")
@@ -73,11 +64,6 @@ def parse_args(argv=None):
     ap.add_argument("--timeout", type=float, default=600, help="per-run timeout, s (600)")
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs per fill; the median wall time is reported (3)")
-    ap.add_argument("--mem-limit-mb", type=float, default=8192,
-                    help="address-space limit per run (RLIMIT_AS), MB; a run needing more "
-                         "fails and is recorded instead of exhausting the shared machine "
-                         "(8192; 0 = none)")
-    ap.add_argument("--force", action="store_true", help="ignore cached results")
     ap.add_argument("--work", default=None,
                     help="work folder (default bench/work/accuracy, or bench/work/accuracy-quick)")
     ap.add_argument("--out", default=None, help="markdown file (default bench/ACCURACY.md)")
@@ -321,14 +307,8 @@ def write_report(a, cases, methods, skipped, results, pngs, mcmd_msg, elapsed):
             ref = results.get((c[0], REF))
             cells = []
             for m in mlist:
-                r = results.get((c[0], m))
-                if not r:
-                    cells.append("not run")
-                elif not r.get("ok"):
-                    cells.append(r.get("error", "failed").replace("|", "/")[:60])
-                else:
-                    x = ratio(r, ref, "rmse")
-                    cells.append(f"{r['rmse']:.2f} ({V.fmt(x, '.2f')})")
+                cells.append(V.result_cell(results.get((c[0], m)), lambda r: (
+                    f"{r['rmse']:.2f} ({V.fmt(ratio(r, ref, 'rmse'), '.2f')})")))
             L.append(f"| {c[1]} s{c[3]} | " + " | ".join(cells) + " |")
         L.append("")
 

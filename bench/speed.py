@@ -24,7 +24,6 @@ the command line changes, or with --force.
 
 from __future__ import annotations
 
-import argparse
 import os
 import sys
 import time
@@ -59,20 +58,12 @@ LABEL = {"mcmd": "mcmd (default)", "mcmd-t1": "mcmd -threads 1", "gdal-si2": "gd
          "mcmd-t2": "mcmd -threads 2", "mcmd-tile257": "mcmd -tile 257"}
 
 
-def log(*a):
-    print(*a, flush=True)
+log = V.log
 
 
 def parse_args(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--mcmd", default=V.DEFAULT_MCMD,
-                    help="path to mcmd_fillnodata (default: build/bin/mcmd_fillnodata)")
-    ap.add_argument("--quick", action="store_true",
-                    help="smoke run: zion (kept3, blobs) + the alpes-maritimes tile; writes "
-                         "bench/work/RESULTS-quick.md, not bench/RESULTS.md")
-    ap.add_argument("--only", action="append", default=[],
-                    help="restrict to files whose name contains this (repeatable)")
+    ap = V.common_parser(__doc__, "smoke run: zion (kept3, blobs) + the alpes-maritimes tile; writes "
+                         "bench/work/RESULTS-quick.md, not bench/RESULTS.md", "restrict to files whose name contains this (repeatable)")
     ap.add_argument("--kinds", default="kept3,blobs,real",
                     help="case kinds to run (kept3,blobs,real)")
     ap.add_argument("--no-big-kept3", action="store_true",
@@ -90,12 +81,7 @@ def parse_args(argv=None):
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs per fill on files up to 4 M cells; the median time is "
                          "reported (3). Larger files run once.")
-    ap.add_argument("--mem-limit-mb", type=float, default=8192,
-                    help="address-space limit per run (RLIMIT_AS), MB; a run needing more "
-                         "fails and is recorded instead of exhausting the shared machine "
-                         "(8192; 0 = none)")
     ap.add_argument("--keep", action="store_true", help="keep output rasters in the work dir")
-    ap.add_argument("--force", action="store_true", help="ignore cached results")
     ap.add_argument("--work", default=None,
                     help="work folder (default bench/work/speed, or bench/work/speed-quick)")
     ap.add_argument("--out", default=None, help="markdown file (default bench/RESULTS.md)")

@@ -783,3 +783,34 @@ def known_unchanged(inp: np.ndarray, valid: np.ndarray, fill: np.ndarray) -> boo
     if np.issubdtype(a.dtype, np.floating):
         a, b = a.view(np.dtype(f"u{a.dtype.itemsize}")), b.view(np.dtype(f"u{b.dtype.itemsize}"))
     return bool(np.array_equal(a, b))
+
+
+def log(*a):
+    """Print and flush at once, so progress shows in long benchmark runs."""
+    print(*a, flush=True)
+
+
+def common_parser(doc: str, quick_help: str, only_help: str):
+    """The options every benchmark script shares."""
+    import argparse
+    ap = argparse.ArgumentParser(description=doc.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--mcmd", default=DEFAULT_MCMD,
+                    help="path to mcmd_fillnodata (default: build/bin/mcmd_fillnodata)")
+    ap.add_argument("--quick", action="store_true", help=quick_help)
+    ap.add_argument("--only", action="append", default=[], help=only_help)
+    ap.add_argument("--mem-limit-mb", type=float, default=8192,
+                    help="address-space limit per run (RLIMIT_AS), MB; a run needing more "
+                         "fails and is recorded instead of exhausting the shared machine "
+                         "(8192; 0 = none)")
+    ap.add_argument("--force", action="store_true", help="ignore cached results")
+    return ap
+
+
+def result_cell(r: dict | None, ok_text) -> str:
+    """A report table cell: 'not run', the failure, or ok_text(r)."""
+    if not r:
+        return "not run"
+    if not r.get("ok"):
+        return r.get("error", "failed").replace("|", "/")[:60]
+    return ok_text(r)
