@@ -1,0 +1,60 @@
+// The coarse guide: one small fill of the whole raster that makes the upper
+// levels of the subdivision consistent between tiles (docs/tiling.md).
+//
+// Lattice point (i, j) sits at raster cell (i·S, j·S), S a power of two. It
+// is known when the S×S block around it ([i·S - S/2, i·S - S/2 + S) in each
+// axis) has a known cell, and holds the value at the lattice point of a least-
+// squares plane through the block's known cells (slightly regularised; one
+// cell gives its value): unlike a plain mean it is not biased towards the
+// known side of a block that a void cuts. The lattice has
+// ceil((W - 1) / S) + 1 points per row (at most max_side), the last one on or
+// past the raster's last cell; it is mirror-padded to a
+// 2^m+1 grid and filled once with mcmd::fill; windows then read it through an
+// interpolating bicubic (Catmull-Rom) at full resolution.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mcmd/fill.hpp"
+
+namespace mcmd {
+
+// Smallest power of two S with ceil((max(w, h) - 1) / S) + 1 <= max_side.
+int guide_stride(int width, int height, int max_side = 1025);
+
+class CoarseGuide {
+ public:
+  CoarseGuide() = default;
+  // Pre: width, height >= 1, stride a power of two.
+  CoarseGuide(int width, int height, int stride);
+
+  // Accumulate raster rows [y0, y0 + rows), full width, row-major
+  // (valid[i] != 0: known). Rows may come in any order, each once.
+  void add_rows(int y0, int rows, const double* z, const std::uint8_t* valid);
+
+  // Fill the lattice (same method as the windows). Returns false, and stays
+  // unusable, when no lattice point is known. Throws Cancelled.
+  bool solve(const FillParams& params, const ProgressFn& progress = {});
+
+  bool ready() const { return ready_; }
+  int stride() const { return stride_; }
+  int lattice_width() const { return cw_; }
+  int lattice_height() const { return ch_; }
+
+  // The guide surface at raster cell (x, y); cells outside are reflected in.
+  // Exact lattice value at lattice points. Pre: ready().
+  double at(long long x, long long y) const;
+
+ private:
+  int width_ = 1, height_ = 1, stride_ = 1, cw_ = 1, ch_ = 1;
+  struct Moments {  // of the known cells of a block, offsets from the lattice point
+    double n = 0, z = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0, zx = 0, zy = 0;
+  };
+  std::vector<Moments> moments_;
+  std::vector<double> value_;  // cw × ch after solve
+  bool ready_ = false;
+};
+
+}  // namespace mcmd

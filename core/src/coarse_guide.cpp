@@ -1,0 +1,132 @@
+#include "mcmd/coarse_guide.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "mcmd/padding.hpp"
+
+namespace mcmd {
+
+int guide_stride(int width, int height, int max_side) {
+  const long long longest = std::max(width, height);
+  int s = 1;
+  while ((longest - 1 + s - 1) / s + 1 > max_side) s *= 2;
+  return s;
+}
+
+CoarseGuide::CoarseGuide(int width, int height, int stride)
+    : width_(width), height_(height), stride_(stride) {
+  if (width < 1 || height < 1) throw std::invalid_argument("raster size must be >= 1");
+  if (stride < 1 || (stride & (stride - 1)) != 0) throw std::invalid_argument("guide stride must be a power of two");
+  // The last lattice point lies on or past the last raster cell, so that
+  // interpolation inside the raster never needs the mirrored lattice.
+  cw_ = (width - 1 + stride - 1) / stride + 1;
+  ch_ = (height - 1 + stride - 1) / stride + 1;
+  moments_.assign(static_cast<std::size_t>(cw_) * ch_, Moments{});
+}
+
+void CoarseGuide::add_rows(int y0, int rows, const double* z, const std::uint8_t* valid) {
+  const int half = stride_ / 2;
+  // Lattice index of the block holding raster coordinate v: floor((v + S/2) / S).
+  auto lattice_of = [&](int v) { return (v + half) / stride_; };
+  for (int r = 0; r < rows; ++r) {
+    const int j = lattice_of(y0 + r);
+    if (j >= ch_) continue;  // past the last lattice row's block
+    Moments* mrow = moments_.data() + static_cast<std::size_t>(j) * cw_;
+    const double dy = static_cast<double>(y0 + r) - static_cast<double>(j) * stride_;
+    const double* zr = z + static_cast<std::size_t>(r) * width_;
+    const std::uint8_t* vr = valid + static_cast<std::size_t>(r) * width_;
+    for (int x = 0; x < width_; ++x) {
+      if (!vr[x]) continue;
+      const int i = lattice_of(x);
+      if (i >= cw_) break;
+      Moments& m = mrow[i];
+      const double dx = static_cast<double>(x) - static_cast<double>(i) * stride_;
+      const double zv = zr[x];
+      m.n += 1;
+      m.z += zv;
+      m.x += dx;
+      m.y += dy;
+      m.xx += dx * dx;
+      m.yy += dy * dy;
+      m.xy += dx * dy;
+      m.zx += zv * dx;
+      m.zy += zv * dy;
+    }
+  }
+}
+
+namespace {
+// The block's plane fit evaluated at the lattice point (offset 0, 0).
+double plane_at_lattice(double n, double z, double x, double y, double xx, double yy, double xy, double zx,
+                        double zy, int stride) {
+  const double mz = z / n, mx = x / n, my = y / n;
+  // Centred second moments, regularised so that few or collinear cells give
+  // a mean-like value instead of a wild extrapolation.
+  const double reg = 0.02 * (static_cast<double>(stride) * stride) / 12.0 + 1e-9;
+  const double cxx = xx / n - mx * mx + reg, cyy = yy / n - my * my + reg, cxy = xy / n - mx * my;
+  const double czx = zx / n - mz * mx, czy = zy / n - mz * my;
+  const double det = cxx * cyy - cxy * cxy;
+  const double gx = (cyy * czx - cxy * czy) / det;
+  const double gy = (cxx * czy - cxy * czx) / det;
+  return mz - gx * mx - gy * my;
+}
+}  // namespace
+
+bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
+  std::vector<double> mean(moments_.size(), 0.0);
+  std::vector<std::uint8_t> known(moments_.size(), 0);
+  std::size_t known_count = 0;
+  for (std::size_t i = 0; i < moments_.size(); ++i) {
+    const Moments& m = moments_[i];
+    if (m.n == 0) continue;
+    mean[i] = m.n == 1 ? m.z : plane_at_lattice(m.n, m.z, m.x, m.y, m.xx, m.yy, m.xy, m.zx, m.zy, stride_);
+    known[i] = 1;
+    ++known_count;
+  }
+  moments_ = {};
+  if (known_count == 0) return false;
+  value_ = mean;
+  if (known_count < value_.size()) {
+    Grid g = mirror_padded_grid(mean.data(), known.data(), cw_, ch_, levels_to_cover(cw_, ch_));
+    fill(g, params, progress);
+    for (int j = 0; j < ch_; ++j)
+      for (int i = 0; i < cw_; ++i) value_[static_cast<std::size_t>(j) * cw_ + i] = g.z(i, j);
+  }
+  ready_ = true;
+  return true;
+}
+
+namespace {
+// Catmull-Rom weights for the 4 lattice points around fraction f in [0, 1).
+void catmull_rom(double f, double w[4]) {
+  const double f2 = f * f, f3 = f2 * f;
+  w[0] = 0.5 * (-f3 + 2.0 * f2 - f);
+  w[1] = 0.5 * (3.0 * f3 - 5.0 * f2 + 2.0);
+  w[2] = 0.5 * (-3.0 * f3 + 4.0 * f2 + f);
+  w[3] = 0.5 * (f3 - f2);
+}
+}  // namespace
+
+double CoarseGuide::at(long long x, long long y) const {
+  const long long rx = reflect_index(x, width_);
+  const long long ry = reflect_index(y, height_);
+  const long long ix = rx / stride_, iy = ry / stride_;
+  const double fx = static_cast<double>(rx - ix * stride_) / stride_;
+  const double fy = static_cast<double>(ry - iy * stride_) / stride_;
+  if (fx == 0.0 && fy == 0.0) return value_[static_cast<std::size_t>(iy) * cw_ + ix];
+  double wx[4], wy[4];
+  catmull_rom(fx, wx);
+  catmull_rom(fy, wy);
+  double total = 0.0;
+  for (int b = 0; b < 4; ++b) {
+    const std::size_t row = static_cast<std::size_t>(reflect_index(iy - 1 + b, ch_)) * cw_;
+    double acc = 0.0;
+    for (int a = 0; a < 4; ++a) acc += wx[a] * value_[row + reflect_index(ix - 1 + a, cw_)];
+    total += wy[b] * acc;
+  }
+  return total;
+}
+
+}  // namespace mcmd

@@ -1,0 +1,406 @@
+// The tiled fill (docs/tiling.md): layout maths, completeness on odd raster
+// sizes, seams, large voids, determinism across threads and processing order,
+// cancellation and max distance — all through an in-memory RasterAccess.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "mcmd/coarse_guide.hpp"
+#include "mcmd/distance.hpp"
+#include "mcmd/padding.hpp"
+#include "mcmd/tile_layout.hpp"
+#include "mcmd/tile_window.hpp"
+#include "mcmd/tiled_fill.hpp"
+#include "test_terrain.hpp"
+
+using namespace mcmd;
+
+namespace {
+
+// A raster in memory: reads return the original, writes go to `out`.
+struct MemRaster {
+  int w = 0, h = 0;
+  std::vector<double> z, out;
+  std::vector<std::uint8_t> valid;
+  std::size_t known_writes = 0;  // writes to known cells (must stay 0)
+  std::size_t writes = 0;        // cells written
+  std::vector<int> write_count;  // per cell
+
+  MemRaster(int w_, int h_) : w(w_), h(h_) {
+    const std::size_t n = static_cast<std::size_t>(w) * h;
+    z.assign(n, 0.0);
+    valid.assign(n, 1);
+    write_count.assign(n, 0);
+  }
+  std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * w + x; }
+
+  RasterAccess access() {
+    out = z;
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (!valid[i]) out[i] = std::numeric_limits<double>::quiet_NaN();
+    RasterAccess a;
+    a.width = w;
+    a.height = h;
+    a.read = [this](int x0, int y0, int rw, int rh, double* zz, std::uint8_t* vv) {
+      EXPECT_TRUE(x0 >= 0 && y0 >= 0 && x0 + rw <= w && y0 + rh <= h);
+      for (int y = 0; y < rh; ++y)
+        for (int x = 0; x < rw; ++x) {
+          zz[static_cast<std::size_t>(y) * rw + x] = z[at(x0 + x, y0 + y)];
+          vv[static_cast<std::size_t>(y) * rw + x] = valid[at(x0 + x, y0 + y)];
+        }
+    };
+    a.write = [this](int x0, int y0, int rw, int rh, const double* zz, const std::uint8_t* m) {
+      EXPECT_TRUE(x0 >= 0 && y0 >= 0 && x0 + rw <= w && y0 + rh <= h);
+      for (int y = 0; y < rh; ++y)
+        for (int x = 0; x < rw; ++x) {
+          if (!m[static_cast<std::size_t>(y) * rw + x]) continue;
+          const std::size_t i = at(x0 + x, y0 + y);
+          if (valid[i]) ++known_writes;
+          ++writes;
+          ++write_count[i];
+          out[i] = zz[static_cast<std::size_t>(y) * rw + x];
+        }
+    };
+    return a;
+  }
+  std::size_t voids() const { return static_cast<std::size_t>(std::count(valid.begin(), valid.end(), 0)); }
+  bool complete() const {
+    return std::all_of(out.begin(), out.end(), [](double v) { return std::isfinite(v); });
+  }
+};
+
+double terrain(int x, int y) {
+  return 800.0 + 300.0 * std::sin(x * 0.021) * std::cos(y * 0.017) + 120.0 * std::sin(0.05 * x + 0.03 * y) +
+         0.8 * x - 0.5 * y;
+}
+
+// Terrain everywhere, then voids: discs and scattered cells (hash under `drop`).
+MemRaster make_raster(int w, int h, double drop = 0.05) {
+  MemRaster r(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      r.z[r.at(x, y)] = terrain(x, y);
+      const bool dropped = (hash_uniform(11, x, y) + 1.0) / 2.0 < drop;
+      const bool disc = std::hypot(x - 0.4 * w, y - 0.6 * h) < 0.12 * std::max(w, h);
+      if (dropped || disc) r.valid[r.at(x, y)] = 0;
+    }
+  if (r.voids() == r.valid.size()) r.valid[0] = 1;
+  return r;
+}
+
+void punch_disc(MemRaster& r, double cx, double cy, double radius) {
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x)
+      if (std::hypot(x - cx, y - cy) <= radius) r.valid[r.at(x, y)] = 0;
+}
+
+std::vector<double> run(MemRaster& r, int tile, int threads, const TiledFillHooks& hooks = {}) {
+  TilingParams tp;
+  tp.tile_side = tile;
+  tp.threads = threads;
+  tiled_fill(r.access(), FillParams{}, tp, {}, hooks);
+  return r.out;
+}
+
+bool bit_identical(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+}  // namespace
+
+TEST(TileLayout, AxisCoversTheRasterWithSharedBorders) {
+  const TileAxis a(1000, 64);  // tiles of 65 cells
+  EXPECT_EQ(a.count(), 16);    // ceil(999 / 64)
+  EXPECT_EQ(a.band(), 8);
+  EXPECT_EQ(a.window_side(), 129);
+  EXPECT_EQ(a.window_origin(3), 3 * 64 - 32);
+  EXPECT_EQ(TileAxis(1, 2).count(), 1);
+  EXPECT_EQ(TileAxis(65, 64).count(), 1);
+  EXPECT_EQ(TileAxis(66, 64).count(), 2);
+  // Solo zones and seam bands partition the axis; weights sum to one.
+  std::vector<int> covered(1000, 0);
+  for (int t = 0; t < a.count(); ++t)
+    for (int x = a.solo(t).begin; x < a.solo(t).end; ++x) ++covered[x];
+  for (int s = 1; s < a.count(); ++s)
+    for (int x = a.seam_band(s).begin; x < a.seam_band(s).end; ++x) ++covered[x];
+  EXPECT_TRUE(std::all_of(covered.begin(), covered.end(), [](int c) { return c == 1; }));
+  for (int x = 0; x < 1000; ++x) {
+    double sum = 0.0;
+    for (int t = 0; t < a.count(); ++t) {
+      const double w = a.weight(t, x);
+      const Range r = a.region(t);
+      EXPECT_EQ(w > 0.0, x >= r.begin && x < r.end) << "t=" << t << " x=" << x;
+      sum += w;
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-15);
+    EXPECT_EQ(a.weight(a.owner(x), x) >= 0.5, true);
+  }
+  for (int t = 0; t < a.count(); ++t)  // the output region lies inside the window
+    EXPECT_GE(a.region(t).begin, a.window_origin(t));
+  EXPECT_EQ(a.weight(2, 2 * 64), 0.5);  // the shared border cell: half each
+}
+
+TEST(TileLayout, RampIsSmoothAndSymmetric) {
+  EXPECT_EQ(blend_ramp(-1.0), 0.0);
+  EXPECT_EQ(blend_ramp(2.0), 1.0);
+  for (double u = 0.0; u <= 1.0; u += 0.01) EXPECT_NEAR(blend_ramp(u) + blend_ramp(1.0 - u), 1.0, 1e-14);
+  const double e = 1e-6;  // zero slope at both ends: no kink where the band starts
+  EXPECT_NEAR((blend_ramp(e) - blend_ramp(0.0)) / e, 0.0, 1e-6);
+  EXPECT_NEAR((blend_ramp(1.0) - blend_ramp(1.0 - e)) / e, 0.0, 1e-6);
+}
+
+TEST(TileLayout, EffectiveTileSide) {
+  EXPECT_EQ(effective_tile_side(5000, 300, 0), kDefaultTileSide);
+  EXPECT_EQ(effective_tile_side(100, 60, 0), 129);
+  EXPECT_EQ(effective_tile_side(1, 1, 0), 3);
+  EXPECT_EQ(effective_tile_side(5000, 300, 257), 257);
+  EXPECT_THROW(effective_tile_side(100, 100, 100), std::invalid_argument);
+  EXPECT_THROW(effective_tile_side(100, 100, 2), std::invalid_argument);
+}
+
+TEST(CoarseGuide, InterpolatesLatticeAndFillsGaps) {
+  const int W = 64, H = 40;
+  std::vector<double> z(W * H);
+  std::vector<std::uint8_t> v(W * H, 1);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) z[y * W + x] = 2.0 * x - 3.0 * y + 10.0;
+  for (int y = 10; y < 30; ++y)
+    for (int x = 20; x < 50; ++x) v[y * W + x] = 0;
+  CoarseGuide g(W, H, guide_stride(W, H, 9));
+  EXPECT_EQ(g.stride(), 8);
+  g.add_rows(0, 17, z.data(), v.data());
+  g.add_rows(17, H - 17, z.data() + 17 * W, v.data() + 17 * W);
+  ASSERT_TRUE(g.solve(FillParams{}));
+  // A plane is kept by the block plane fits (also of partly known blocks),
+  // the thin-plate fill and Catmull-Rom, up to the fits' regularisation and
+  // the mirror padding of the lattice (5 rows padded to 9).
+  EXPECT_NEAR(g.at(8, 8), 2.0 * 8 - 3.0 * 8 + 10.0, 0.05);
+  EXPECT_NEAR(g.at(35, 20), 2.0 * 35 - 3.0 * 20 + 10.0, 1.0);
+  EXPECT_NEAR(g.at(63, 39), 2.0 * 63 - 3.0 * 39 + 10.0, 1.0);
+  EXPECT_EQ(g.at(-3, 5), g.at(3, 5));  // reflected outside the raster
+}
+
+TEST(TiledFill, OddRasterSizesFillCompletelyAndNeverWriteKnownCells) {
+  const int sizes[][2] = {{1, 1}, {2, 2}, {3, 1000}, {1000, 3}, {256, 256}, {257, 257}, {258, 258}, {37, 91}};
+  for (int tile : {5, 17, 65, 0}) {
+    for (const auto& s : sizes) {
+      MemRaster r = make_raster(s[0], s[1]);
+      if (s[0] == 2) r.valid = {1, 0, 0, 1};
+      const std::size_t voids = r.voids();
+      TiledFillStats stats;
+      TiledFillHooks hooks;
+      hooks.stats = &stats;
+      run(r, tile, 2, hooks);
+      SCOPED_TRACE(testing::Message() << s[0] << "x" << s[1] << " tile " << tile);
+      EXPECT_TRUE(r.complete());
+      EXPECT_EQ(r.known_writes, 0u);
+      EXPECT_EQ(r.writes, voids);  // each void cell written exactly once
+      EXPECT_TRUE(std::all_of(r.write_count.begin(), r.write_count.end(), [](int c) { return c <= 1; }));
+      for (std::size_t i = 0; i < r.z.size(); ++i)
+        if (r.valid[i]) {
+          ASSERT_EQ(r.out[i], r.z[i]);
+        }
+      EXPECT_EQ(stats.void_cells, voids);
+    }
+  }
+}
+
+TEST(TiledFill, FillsCloseToTheTerrain) {
+  MemRaster r = make_raster(300, 200, 0.3);
+  run(r, 65, 2);
+  double se = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < r.z.size(); ++i)
+    if (!r.valid[i]) {
+      se += (r.out[i] - r.z[i]) * (r.out[i] - r.z[i]);
+      ++n;
+    }
+  EXPECT_LT(std::sqrt(se / n), 10.0);  // elevation range ~900
+}
+
+// A void centred on a vertical seam and on a horizontal one: neighbouring
+// windows agree where they overlap, and the blended surface has no jump or
+// kink at the seam (second differences there like those inside the void).
+TEST(TiledFill, VoidAcrossASeamIsOneSurface) {
+  MemRaster r(257, 257);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(3 * x, 3 * y);
+  punch_disc(r, 128, 100, 40);  // crosses seam x = 128 (tile 65: seams every 64)
+  const std::vector<double> out = run(r, 65, 2);
+
+  const TileLayout layout(r.w, r.h, 65);
+  CoarseGuide guide(r.w, r.h, guide_stride(r.w, r.h));
+  guide.add_rows(0, r.h, r.z.data(), r.valid.data());
+  ASSERT_TRUE(guide.solve(FillParams{}));
+  auto window = [&](int tx, int ty) {
+    WindowInput in;
+    in.tx = tx;
+    in.ty = ty;
+    in.rect = window_read_rect(layout, tx, ty);
+    for (int y = 0; y < in.rect.h; ++y)
+      for (int x = 0; x < in.rect.w; ++x) {
+        in.z.push_back(r.z[r.at(in.rect.x0 + x, in.rect.y0 + y)]);
+        in.valid.push_back(r.valid[r.at(in.rect.x0 + x, in.rect.y0 + y)]);
+      }
+    FillParams p;
+    p.noise_unit = 1.0;
+    return solve_window(layout, in, &guide, p, 0.0);
+  };
+  const WindowResult a = window(1, 1), b = window(2, 1);  // seam x = 128 between them
+  double max_diff = 0.0;
+  for (int y = std::max(a.ys.begin, b.ys.begin); y < std::min(a.ys.end, b.ys.end); ++y)
+    for (int x = b.xs.begin; x < a.xs.end; ++x) {
+      if (r.valid[r.at(x, y)]) continue;
+      const double fa = a.z[(y - a.ys.begin) * a.xs.size() + (x - a.xs.begin)];
+      const double fb = b.z[(y - b.ys.begin) * b.xs.size() + (x - b.xs.begin)];
+      max_diff = std::max(max_diff, std::abs(fa - fb));
+    }
+  EXPECT_LT(max_diff, 0.5) << "windows disagree on the overlap";
+
+  // Second differences across the seam column vs elsewhere in the void.
+  auto d2x = [&](int x, int y) { return std::abs(out[r.at(x - 1, y)] - 2 * out[r.at(x, y)] + out[r.at(x + 1, y)]); };
+  auto d1x = [&](int x, int y) { return std::abs(out[r.at(x + 1, y)] - out[r.at(x, y)]); };
+  double seam_d2 = 0.0, inner_d2 = 0.0, seam_d1 = 0.0, inner_d1 = 0.0;
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 1; x < r.w - 1; ++x) {
+      if (r.valid[r.at(x - 1, y)] || r.valid[r.at(x, y)] || r.valid[r.at(x + 1, y)]) continue;
+      const bool at_seam = std::abs(x - 128) <= layout.x.band();
+      (at_seam ? seam_d2 : inner_d2) = std::max(at_seam ? seam_d2 : inner_d2, d2x(x, y));
+      (at_seam ? seam_d1 : inner_d1) = std::max(at_seam ? seam_d1 : inner_d1, d1x(x, y));
+    }
+  EXPECT_GT(inner_d2, 0.0);
+  EXPECT_LE(seam_d2, 1.5 * inner_d2);
+  EXPECT_LE(seam_d1, 1.5 * inner_d1);
+}
+
+TEST(TiledFill, VoidLargerThanATileFills) {
+  MemRaster r(300, 260);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  for (int y = 20; y < 240; ++y)
+    for (int x = 30; x < 270; ++x) r.valid[r.at(x, y)] = 0;  // 240×220 void, tiles of 33
+  TiledFillStats stats;
+  TiledFillHooks hooks;
+  hooks.stats = &stats;
+  run(r, 33, 2, hooks);
+  EXPECT_TRUE(r.complete());
+  EXPECT_EQ(r.known_writes, 0u);
+  EXPECT_GT(stats.guide_stride, 0);
+  const auto [lo, hi] = std::minmax_element(r.z.begin(), r.z.end());
+  for (std::size_t i = 0; i < r.out.size(); ++i) {
+    EXPECT_GT(r.out[i], *lo - 0.5 * (*hi - *lo));
+    EXPECT_LT(r.out[i], *hi + 0.5 * (*hi - *lo));
+  }
+}
+
+TEST(TiledFill, BitIdenticalForAnyThreadCountAndOrder) {
+  MemRaster r = make_raster(301, 203, 0.2);
+  punch_disc(r, 150, 100, 60);
+  const std::vector<double> one = run(r, 33, 1);
+  EXPECT_TRUE(bit_identical(one, run(r, 33, 2)));
+  EXPECT_TRUE(bit_identical(one, run(r, 33, 4)));
+  TiledFillHooks shuffled;
+  shuffled.reorder = [](std::vector<std::size_t>& order) {
+    std::mt19937 rng(7);
+    std::shuffle(order.begin(), order.end(), rng);
+  };
+  EXPECT_TRUE(bit_identical(one, run(r, 33, 3, shuffled)));
+  TiledFillHooks reversed;
+  reversed.reorder = [](std::vector<std::size_t>& order) { std::reverse(order.begin(), order.end()); };
+  EXPECT_TRUE(bit_identical(one, run(r, 33, 1, reversed)));
+}
+
+TEST(TiledFill, TileSizesAgreeClosely) {
+  MemRaster r = make_raster(300, 300, 0.1);
+  const std::vector<double> a = run(r, 65, 2);
+  const std::vector<double> b = run(r, 129, 2);
+  double se_a = 0, se_b = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!r.valid[i]) {
+      se_a += (a[i] - r.z[i]) * (a[i] - r.z[i]);
+      se_b += (b[i] - r.z[i]) * (b[i] - r.z[i]);
+    }
+  EXPECT_NEAR(std::sqrt(se_a), std::sqrt(se_b), 0.03 * std::sqrt(se_b));
+}
+
+TEST(TiledFill, VoidFreeTilesAreNotSolved) {
+  MemRaster r(400, 400);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  punch_disc(r, 30, 30, 5);
+  TiledFillStats stats;
+  TiledFillHooks hooks;
+  hooks.stats = &stats;
+  run(r, 65, 2, hooks);
+  EXPECT_EQ(stats.tiles_x * stats.tiles_y, 49);
+  EXPECT_EQ(stats.windows_solved, 1u);
+  EXPECT_TRUE(r.complete());
+
+  MemRaster clean(100, 100);
+  run(clean, 33, 2, hooks);
+  EXPECT_EQ(clean.writes, 0u);
+  EXPECT_EQ(stats.windows_solved, 0u);
+}
+
+TEST(TiledFill, MaxDistanceLeavesFarCellsUnwritten) {
+  MemRaster r(200, 150);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  punch_disc(r, 100, 75, 30);
+  punch_disc(r, 20, 20, 6);
+  TilingParams tp;
+  tp.tile_side = 129;  // halo 64, band 16: exact up to 46 cells
+  tp.max_distance = 10.0;
+  tiled_fill(r.access(), FillParams{}, tp);
+  const std::vector<double> dist = distance_to_valid(r.valid.data(), r.w, r.h);
+  for (std::size_t i = 0; i < dist.size(); ++i) {
+    if (r.valid[i]) continue;
+    EXPECT_EQ(r.write_count[i], dist[i] <= 10.0 ? 1 : 0) << i;
+  }
+}
+
+TEST(TiledFill, CancelStopsWithCancelled) {
+  MemRaster r = make_raster(300, 300, 0.2);
+  TilingParams tp;
+  tp.tile_side = 33;
+  tp.threads = 2;
+  int calls = 0;
+  const ProgressFn stop = [&](double f) {
+    ++calls;
+    return f < 0.5;
+  };
+  EXPECT_THROW(tiled_fill(r.access(), FillParams{}, tp, stop), Cancelled);
+  EXPECT_GT(calls, 1);
+  int last_calls = 0;
+  double last = -1.0;
+  bool monotone = true;
+  const ProgressFn watch = [&](double f) {
+    monotone = monotone && f >= last;
+    last = f;
+    ++last_calls;
+    return true;
+  };
+  tiled_fill(r.access(), FillParams{}, tp, watch);
+  EXPECT_TRUE(monotone);
+  EXPECT_EQ(last, 1.0);
+}
+
+TEST(TiledFill, RejectsBadInput) {
+  MemRaster r = make_raster(50, 50);
+  TilingParams tp;
+  tp.tile_side = 100;
+  EXPECT_THROW(tiled_fill(r.access(), FillParams{}, tp), std::invalid_argument);
+  tp.tile_side = 17;
+  tp.max_distance = -1;
+  EXPECT_THROW(tiled_fill(r.access(), FillParams{}, tp), std::invalid_argument);
+  MemRaster empty(40, 30);
+  std::fill(empty.valid.begin(), empty.valid.end(), 0);
+  EXPECT_THROW(tiled_fill(empty.access(), FillParams{}, TilingParams{}), std::invalid_argument);
+}
