@@ -8,9 +8,10 @@ namespace mcmd {
 namespace {
 
 // Interior cells (2 <= x, y <= side-3): every term fits, the 13-point stencil.
-inline double interior_az(const double* z, std::ptrdiff_t s, std::size_t i) {
+inline double interior_az(const double* z, std::ptrdiff_t s, std::size_t i, double t) {
   const double* c = z + i;
-  return 20.0 * c[0] - 8.0 * (c[-1] + c[1] + c[-s] + c[s]) +
+  const double n4 = c[-1] + c[1] + c[-s] + c[s];
+  return (20.0 + 4.0 * t) * c[0] - (8.0 + t) * n4 +
          2.0 * (c[-s - 1] + c[-s + 1] + c[s - 1] + c[s + 1]) + (c[-2] + c[2] + c[-2 * s] + c[2 * s]);
 }
 
@@ -33,10 +34,21 @@ inline void axis_terms(const double* c, std::ptrdiff_t step, int pos, int side, 
 
 }  // namespace
 
-ThinPlateRow thin_plate_row(const double* z, int side, int x, int y) {
+ThinPlateRow thin_plate_row(const double* z, int side, int x, int y, double tension) {
   const std::ptrdiff_t s = side;
   const double* c = z + static_cast<std::ptrdiff_t>(y) * s + x;
   ThinPlateRow row;
+  if (tension > 0) {
+    const auto edge = [&](bool inside, std::ptrdiff_t off) {
+      if (!inside) return;
+      row.az += tension * (c[0] - c[off]);
+      row.diag += tension;
+    };
+    edge(x > 0, -1);
+    edge(x < side - 1, 1);
+    edge(y > 0, -s);
+    edge(y < side - 1, s);
+  }
   axis_terms(c, 1, x, side, row);
   axis_terms(c, s, y, side, row);
   // 2×2 blocks with top-left (bx, by); the cell's sign is + on the block's
@@ -68,20 +80,21 @@ void relax_interior_run(Lattice& lat, std::size_t i0, int count, const double* r
   double* c = lat.z.data() + i0;
   const double* spring = lat.spring.empty() ? nullptr : lat.spring.data() + i0;
   const double* target = lat.target.empty() ? nullptr : lat.target.data() + i0;
+  const double ten = lat.tension, diag = 20.0 + 4.0 * ten, near = 8.0 + ten;
   double w2 = c[-2], w1 = c[-1];
   for (int t = 0; t < count; ++t, ++c) {
     double b = rhs ? rhs[i0 + t] : 0.0;
-    double inv = omega / 20.0;
+    double inv = omega / diag;
     if (spring) {
       b += spring[t] * target[t];
-      inv = omega / (20.0 + spring[t]);
+      inv = omega / (diag + spring[t]);
     }
     // Everything but the left neighbour, which is on the chain: written so the
     // chain is one multiply-add (the compiler may not reassociate).
-    const double rest = 8.0 * (c[1] + c[-s] + c[s]) - 2.0 * (c[-s - 1] + c[-s + 1] + c[s - 1] + c[s + 1]) -
+    const double rest = near * (c[1] + c[-s] + c[s]) - 2.0 * (c[-s - 1] + c[-s + 1] + c[s - 1] + c[s + 1]) -
                         (c[2] + c[-2 * s] + c[2 * s]) + b - w2;
     const double pre = (1.0 - omega) * c[0] + inv * rest;
-    const double zn = pre + (8.0 * inv) * w1;
+    const double zn = pre + (near * inv) * w1;
     c[0] = zn;
     w2 = w1;
     w1 = zn;
@@ -90,7 +103,7 @@ void relax_interior_run(Lattice& lat, std::size_t i0, int count, const double* r
 
 void relax_border_cell(Lattice& lat, const double* rhs, int x, int y, double omega) {
   const std::size_t i = lat.index(x, y);
-  ThinPlateRow r = thin_plate_row(lat.z.data(), lat.side, x, y);
+  ThinPlateRow r = thin_plate_row(lat.z.data(), lat.side, x, y, lat.tension);
   if (!lat.spring.empty()) {
     r.az += lat.spring[i] * (lat.z[i] - lat.target[i]);
     r.diag += lat.spring[i];
@@ -120,7 +133,8 @@ double residual_at(const Lattice& lat, const double* rhs, int x, int y) {
   const int side = lat.side;
   const std::size_t i = lat.index(x, y);
   const bool inside = x >= 2 && y >= 2 && x <= side - 3 && y <= side - 3;
-  const double az = inside ? interior_az(lat.z.data(), side, i) : thin_plate_row(lat.z.data(), side, x, y).az;
+  const double az = inside ? interior_az(lat.z.data(), side, i, lat.tension)
+                           : thin_plate_row(lat.z.data(), side, x, y, lat.tension).az;
   return (rhs ? rhs[i] : 0.0) - az;
 }
 

@@ -40,6 +40,7 @@ bool any_pinned_around(const Lattice& fine, int x, int y) {
 Lattice coarser_lattice(const Lattice& fine, CoarsePin rule) {
   Lattice c;
   c.side = (fine.side + 1) / 2;
+  c.tension = 4.0 * fine.tension;
   const std::size_t cells = static_cast<std::size_t>(c.side) * c.side;
   c.z.assign(cells, 0.0);
   c.pinned.assign(cells, 0);

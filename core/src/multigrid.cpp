@@ -1,6 +1,7 @@
 #include "mcmd/multigrid.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "mcmd/biharmonic_relax.hpp"
 #include "mcmd/cubic_prolong.hpp"
@@ -102,6 +103,93 @@ void Multigrid::cycle(Lattice& fine, const double* rhs, int k) {
 
   add_correction(fine, coarse, row);
   relax(fine, rhs, schedule_.post_sweeps);
+}
+
+namespace {
+
+double dot_free(const Lattice& lat, const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0.0;
+  for (const Span& sp : lat.spans) {
+    const std::size_t i0 = lat.index(sp.x0, sp.y);
+    for (int t = 0; t < sp.x1 - sp.x0; ++t) s += a[i0 + t] * b[i0 + t];
+  }
+  return s;
+}
+
+}  // namespace
+
+int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations) {
+  if (finest.spans.empty()) return 0;
+  const int top = static_cast<int>(coarse_.size()) - 1;
+  const std::size_t cells = finest.z.size();
+  // r = -A z at the free cells (the problem is A z = 0 with pinned cells fixed).
+  std::vector<double> r(cells, 0.0);
+  residual(finest, nullptr, r);
+  const double r0 = std::sqrt(dot_free(finest, r, r));
+  if (!(r0 > 0)) return 0;
+  // Work lattice: the same free cells, pinned cells 0 (directions and
+  // preconditioned residuals vanish there).
+  Lattice work;
+  work.side = finest.side;
+  work.tension = finest.tension;
+  work.pinned = finest.pinned;
+  work.spans = finest.spans;
+  work.z.assign(cells, 0.0);
+  std::vector<double> zv(cells, 0.0), p(cells, 0.0), q(cells, 0.0), r_old(cells, 0.0);
+  // Only free cells are ever written (work.z stays 0 at pinned cells), so
+  // every copy runs over the spans: the cost follows the unknown cells.
+  const auto copy_free = [&](const std::vector<double>& from, std::vector<double>& to) {
+    for (const Span& sp : work.spans) {
+      const std::size_t i0 = work.index(sp.x0, sp.y);
+      std::copy(from.begin() + i0, from.begin() + i0 + (sp.x1 - sp.x0), to.begin() + i0);
+    }
+  };
+  const auto precondition = [&](const std::vector<double>& rhs, std::vector<double>& out) {
+    for (const Span& sp : work.spans) {
+      const std::size_t i0 = work.index(sp.x0, sp.y);
+      std::fill(work.z.begin() + i0, work.z.begin() + i0 + (sp.x1 - sp.x0), 0.0);
+    }
+    cycle(work, rhs.data(), top);
+    copy_free(work.z, out);
+  };
+  const auto apply = [&](const std::vector<double>& v, std::vector<double>& out) {  // out = A v
+    copy_free(v, work.z);
+    for (const Span& sp : work.spans)
+      for (int x = sp.x0; x < sp.x1; ++x) out[work.index(x, sp.y)] = -residual_at(work, nullptr, x, sp.y);
+  };
+  precondition(r, zv);
+  copy_free(zv, p);
+  double rz = dot_free(finest, r, zv);
+  int it = 0;
+  while (it < max_iterations) {
+    apply(p, q);
+    const double pq = dot_free(finest, p, q);
+    if (!(pq > 0)) break;
+    const double alpha = rz / pq;
+    copy_free(r, r_old);
+    for (const Span& sp : finest.spans) {
+      const std::size_t i0 = finest.index(sp.x0, sp.y);
+      for (int t = 0; t < sp.x1 - sp.x0; ++t) {
+        finest.z[i0 + t] += alpha * p[i0 + t];
+        r[i0 + t] -= alpha * q[i0 + t];
+      }
+    }
+    ++it;
+    if (std::sqrt(dot_free(finest, r, r)) <= rel_tol * r0) break;
+    precondition(r, zv);
+    double num = 0.0;
+    for (const Span& sp : finest.spans) {
+      const std::size_t i0 = finest.index(sp.x0, sp.y);
+      for (int t = 0; t < sp.x1 - sp.x0; ++t) num += zv[i0 + t] * (r[i0 + t] - r_old[i0 + t]);
+    }
+    const double beta = rz > 0 ? num / rz : 0.0;
+    rz = dot_free(finest, r, zv);
+    for (const Span& sp : finest.spans) {
+      const std::size_t i0 = finest.index(sp.x0, sp.y);
+      for (int t = 0; t < sp.x1 - sp.x0; ++t) p[i0 + t] = zv[i0 + t] + beta * p[i0 + t];
+    }
+  }
+  return it;
 }
 
 }  // namespace mcmd

@@ -24,6 +24,10 @@ struct Lattice {
   // free cells (empty: none). Pulls towards an estimate without pinning it.
   std::vector<double> spring;
   std::vector<double> target;
+  // Tension: weight of the membrane term Σ over grid edges (z_i - z_j)² added
+  // to the thin-plate energy, in this lattice's own units (a level of spacing
+  // 2^k cells carries 4^k times the finest level's). 0: pure thin plate.
+  double tension = 0.0;
 
   std::size_t index(int x, int y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x);
@@ -42,7 +46,8 @@ enum class CoarsePin {
 };
 
 // The next coarser lattice (side (s+1)/2): cell (i, j) is fine cell (2i, 2j),
-// pinned by `rule`; z copied from (2i, 2j) at pinned cells, 0 elsewhere.
+// pinned by `rule`; z copied from (2i, 2j) at pinned cells, 0 elsewhere;
+// tension 4× the fine one's.
 // Pre: fine.side >= 3 and odd.
 Lattice coarser_lattice(const Lattice& fine, CoarsePin rule = CoarsePin::position);
 

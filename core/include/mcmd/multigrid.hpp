@@ -31,6 +31,14 @@ class Multigrid {
   // zero at its pinned cells), add its cubic prolongation, smooth.
   void v_cycle(Lattice& finest);
 
+  // Conjugate gradients on the free cells of `finest`, preconditioned by one
+  // V-cycle per iteration (flexible form: β of Polak-Ribière, so the slightly
+  // non-symmetric Gauss-Seidel V-cycle is harmless), until the residual's
+  // 2-norm is below rel_tol times the starting one, or max_iterations.
+  // Dot products run over the spans in a fixed order: deterministic.
+  // Returns the iterations done.
+  int solve_pcg(Lattice& finest, double rel_tol, int max_iterations);
+
  private:
   void cycle(Lattice& fine, const double* rhs, int k);
 

@@ -19,7 +19,10 @@ struct ThinPlateSchedule {
   double omega = 1.0;      // SOR factor of the cascade sweeps
   CascadeStart start = CascadeStart::blend;
   double spring = 300.0;   // spring per unit constraint density on coarse cascade levels (0: none)
-  int v_cycles = 3;        // at the finest level, after the cascade
+  double tension = 0.0;    // membrane weight at the finest level (×4 per coarser level)
+  int v_cycles = 3;        // plain V-cycles at the finest level, used when pcg_tol <= 0
+  double pcg_tol = 1e-3;   // > 0: V-cycle-preconditioned CG instead, until this relative residual
+  int pcg_max_iterations = 4;  // or this many iterations (measured: converging hurts blob voids)
   VCycleSchedule vcycle{};
 };
 
