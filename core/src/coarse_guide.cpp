@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "mcmd/distance.hpp"
 #include "mcmd/padding.hpp"
 
 namespace mcmd {
@@ -86,6 +87,7 @@ bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
     ++known_count;
   }
   moments_ = {};
+  known_ = known;
   if (known_count == 0) return false;
   value_ = mean;
   if (known_count < value_.size()) {
@@ -127,6 +129,17 @@ double CoarseGuide::at(long long x, long long y) const {
     total += wy[b] * acc;
   }
   return total;
+}
+
+void CoarseGuide::prepare_distance() {
+  if (distance_.empty()) distance_ = distance_to_valid(known_.data(), cw_, ch_);
+}
+
+double CoarseGuide::coarse_distance(long long x, long long y) const {
+  const long long rx = reflect_index(x, width_), ry = reflect_index(y, height_);
+  const long long i = std::min<long long>((rx + stride_ / 2) / stride_, cw_ - 1);
+  const long long j = std::min<long long>((ry + stride_ / 2) / stride_, ch_ - 1);
+  return stride_ * distance_[static_cast<std::size_t>(j) * cw_ + i];
 }
 
 }  // namespace mcmd

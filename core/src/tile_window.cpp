@@ -27,6 +27,10 @@ double guide_radius(const TileLayout& layout, const CoarseGuide& guide) {
   return std::max(1.0, std::min(8.0 * guide.stride(), limit));
 }
 
+int exact_distance_limit(const TileLayout& layout) {
+  return std::min(layout.x.step(), layout.y.step()) / 2 - layout.x.band();
+}
+
 ReadRect window_read_rect(const TileLayout& layout, int tx, int ty) {
   // Reflection maps a run of cells onto a run, so [min, max] covers them all.
   const std::vector<int> xs = reflected(layout.x.window_origin(tx), layout.x.window_side(), layout.x.length());
@@ -96,12 +100,16 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
   const std::size_t cells = static_cast<std::size_t>(r.xs.size()) * r.ys.size();
   r.z.resize(cells);
   r.write.resize(cells);
+  const bool beyond_window = guided && max_distance > exact_distance_limit(layout);
   std::size_t k = 0;
   for (int y = r.ys.begin; y < r.ys.end; ++y)
     for (int x = r.xs.begin; x < r.xs.end; ++x, ++k) {
       const std::size_t i = grid.index(x - ox, y - oy);
       r.z[k] = grid.elevations()[i];
-      r.write[k] = !known[i] && (max_distance <= 0 || dist[i] <= max_distance) ? 1 : 0;
+      bool write = !known[i];
+      if (write && max_distance > 0 && dist[i] > max_distance)
+        write = beyond_window && guide->coarse_distance(x, y) <= max_distance;
+      r.write[k] = write ? 1 : 0;
     }
   return r;
 }

@@ -93,6 +93,8 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
   const detail::ScanResult scan =
       detail::scan_raster(raster, layout, single ? nullptr : &guide, sub_progress(progress, 0.0, 0.10));
   stats.void_cells = scan.voids;
+  stats.known_cells = scan.known;
+  publish();
   if (scan.voids == 0) {
     publish();
     report(progress, 1.0);
@@ -106,6 +108,7 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
   if (!single) {
     guide.solve(p, sub_progress(progress, 0.10, 0.15));
     stats.guide_stride = guide.stride();
+    if (tiling.max_distance > exact_distance_limit(layout)) guide.prepare_distance();
   }
   const CoarseGuide* guide_ptr = single ? nullptr : &guide;
 
@@ -171,8 +174,8 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
           box.ready.notify_all();
         });
       }
-      std::optional<WindowResult> r;
-      for (;;) {
+      WindowResult r;
+      for (bool got = false; !got;) {
         {
           std::unique_lock<std::mutex> lock(box.mutex);
           box.ready.wait_for(lock, std::chrono::milliseconds(100), [&] {
@@ -180,23 +183,23 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
           });
           if (box.errors[next_blend]) std::rethrow_exception(box.errors[next_blend]);
           if (box.results[next_blend]) {
-            r = std::move(box.results[next_blend]);
+            r = std::move(*box.results[next_blend]);
             box.results[next_blend].reset();
+            got = true;
           }
         }
-        if (r) break;
-        report(window_progress, static_cast<double>(next_blend) / N);  // lets a cancel through while waiting
+        if (!got) report(window_progress, static_cast<double>(next_blend) / N);  // lets a cancel through
       }
-      for (; rows_ended < r->ty; ++rows_ended) blender.end_row(rows_ended);
-      blender.add(*r);
-      r.reset();
+      // Report before writing: a refusal here leaves this window unwritten
+      // (a raster of one tile is then left untouched).
+      report(window_progress, static_cast<double>(next_blend + 1) / N);
+      for (; rows_ended < r.ty; ++rows_ended) blender.end_row(rows_ended);
+      blender.add(r);
       ++next_blend;
-      report(window_progress, static_cast<double>(next_blend) / N);
     }
     for (; rows_ended < layout.y.count(); ++rows_ended) blender.end_row(rows_ended);
   }
   publish();
-  report(progress, 1.0);
 }
 
 }  // namespace mcmd

@@ -366,6 +366,29 @@ TEST(TiledFill, MaxDistanceLeavesFarCellsUnwritten) {
   }
 }
 
+// Max distances beyond what a window sees are decided on the guide lattice
+// (exact here: a raster this small has a guide stride of 1).
+TEST(TiledFill, MaxDistanceBeyondTheHaloUsesTheGuide) {
+  MemRaster r(200, 150);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  punch_disc(r, 100, 75, 60);
+  TilingParams tp;
+  tp.tile_side = 33;  // halo 16, band 4: exact up to 12 cells in a window
+  tp.max_distance = 40.0;
+  tiled_fill(r.access(), FillParams{}, tp);
+  const std::vector<double> dist = distance_to_valid(r.valid.data(), r.w, r.h);
+  std::size_t written = 0, expected = 0;
+  for (std::size_t i = 0; i < dist.size(); ++i) {
+    if (r.valid[i]) continue;
+    EXPECT_EQ(r.write_count[i], dist[i] <= 40.0 ? 1 : 0) << i;
+    written += r.write_count[i];
+    expected += dist[i] <= 40.0;
+  }
+  EXPECT_EQ(written, expected);
+  EXPECT_LT(expected, r.voids());
+}
+
 TEST(TiledFill, CancelStopsWithCancelled) {
   MemRaster r = make_raster(300, 300, 0.2);
   TilingParams tp;

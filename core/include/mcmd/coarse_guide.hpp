@@ -47,13 +47,23 @@ class CoarseGuide {
   // Exact lattice value at lattice points. Pre: ready().
   double at(long long x, long long y) const;
 
+  // Distance (cells) from raster cell (x, y) to the nearest known cell,
+  // estimated on the lattice: S × the distance from the nearest lattice point
+  // to the nearest lattice point whose block holds a known cell; within about
+  // 1.5·S of the exact value. For max distances beyond what a window sees.
+  // Pre: ready(); prepare_distance() called once before (not thread-safe).
+  void prepare_distance();
+  double coarse_distance(long long x, long long y) const;
+
  private:
   int width_ = 1, height_ = 1, stride_ = 1, cw_ = 1, ch_ = 1;
   struct Moments {  // of the known cells of a block, offsets from the lattice point
     double n = 0, z = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0, zx = 0, zy = 0;
   };
   std::vector<Moments> moments_;
-  std::vector<double> value_;  // cw × ch after solve
+  std::vector<double> value_;        // cw × ch after solve
+  std::vector<std::uint8_t> known_;  // lattice points whose block holds a known cell
+  std::vector<double> distance_;     // lattice distance to a known point (prepare_distance)
   bool ready_ = false;
 };
 

@@ -37,10 +37,17 @@ struct WindowInput {
   std::vector<std::uint8_t> valid;  // 1 = known
 };
 
+// Up to this max distance the window sees every known cell that decides
+// whether a cell of its output region is written: P/2 - b.
+int exact_distance_limit(const TileLayout& layout);
+
 // Fill tile (tx, ty)'s window. `guide` may be null (a single-tile layout,
-// where the window holds the whole raster). A cell is flagged for writing when
-// it is void and, with max_distance > 0, within max_distance cells (Euclidean)
-// of a known cell of the window — exact when max_distance <= window halo - b.
+// where the window holds the whole raster, mirrored). A cell is flagged for
+// writing when it is void and, with max_distance > 0, within max_distance
+// cells (Euclidean) of a known cell: exact when max_distance <=
+// exact_distance_limit (or for a single tile); beyond, a cell with no known
+// cell within max_distance in the window is decided by the guide's
+// coarse_distance (prepare_distance() must have been called).
 // Throws Cancelled (from progress), std::invalid_argument (no constraint).
 WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const CoarseGuide* guide,
                           const FillParams& params, double max_distance, const ProgressFn& progress = {});

@@ -31,7 +31,7 @@ struct TilingParams {
   double max_distance = 0.0;  // cells; 0 = unlimited (see docs/tiling.md for its exactness)
 };
 
-constexpr int kDefaultTileSide = 513;
+constexpr int kDefaultTileSide = 257;  // measured: see docs/tiling.md
 
 // The tile side actually used: `requested` (0 = default), reduced to the
 // smallest 2^k + 1 (k >= 1) that covers max(width, height) when that is smaller.
@@ -48,12 +48,14 @@ struct TiledFillStats {
   int tiles_y = 0;
   std::size_t windows_solved = 0;  // tiles whose output region holds a void
   int guide_stride = 0;            // 0: no guide (a single tile)
+  std::size_t known_cells = 0;
   std::size_t void_cells = 0;
   std::size_t cells_written = 0;
 };
 
 // Test hooks: permute the order in which windows are computed (their results
-// are still combined in a fixed order), and collect statistics.
+// are still combined in a fixed order), and collect statistics (filled in
+// after the first pass too, so a caller sees the counts when it throws).
 struct TiledFillHooks {
   std::function<void(std::vector<std::size_t>& order)> reorder;
   TiledFillStats* stats = nullptr;
