@@ -108,7 +108,8 @@ void clear_statistics(GDALRasterBand& band) {
   if (dropped) band.SetMetadata(kept.List());
 }
 
-// Fill the selected bands of `target`; voids come from `source` (== target in place).
+// Fill the selected bands of `target`; voids and known cells are read from
+// `source` (== target in place), filled cells written to `target`.
 void fill_bands(GDALDataset& target, GDALDataset& source, const std::vector<int>& bands, GDALRasterBand* file_mask,
                 const Args& args, const ProgressSlice& slice) {
   CPLStringList list;
@@ -120,7 +121,7 @@ void fill_bands(GDALDataset& target, GDALDataset& source, const std::vector<int>
     const gdal::FillRequest req = request_for(source, bands[i], file_mask, args);
     const double w = (slice.hi - slice.lo) / static_cast<double>(bands.size());
     const ProgressSlice part{slice.fn, slice.lo + w * i, slice.lo + w * (i + 1)};
-    gdal::fill_band(*target.GetRasterBand(bands[i]), req, options, part.as_fn());
+    gdal::fill_band(*target.GetRasterBand(bands[i]), *source.GetRasterBand(bands[i]), req, options, part.as_fn());
     clear_statistics(*target.GetRasterBand(bands[i]));
   }
 }
@@ -173,19 +174,34 @@ void copy_band_info(GDALRasterBand& from, GDALRasterBand& to) {
   if (has) to.SetScale(scale);
 }
 
-// A MEM copy of `src`. The copy drops band descriptions, units and the
-// IMAGE_STRUCTURE domain: they and signed bytes (GDAL < 3.7) are set again.
-DatasetPtr work_copy(GDALDataset& src) {
-  GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
-  DatasetPtr work(mem->CreateCopy("", &src, FALSE, nullptr, nullptr, nullptr));
-  if (!work) throw Failure(CPLE_OutOfMemory, std::string("cannot copy the raster to memory: ") + CPLGetLastErrorMsg());
-  for (int b = 1; b <= src.GetRasterCount(); ++b) {
-    copy_band_info(*src.GetRasterBand(b), *work->GetRasterBand(b));
-    const char* pt = src.GetRasterBand(b)->GetMetadataItem("PIXELTYPE", "IMAGE_STRUCTURE");
-    if (pt && EQUAL(pt, "SIGNEDBYTE"))
-      work->GetRasterBand(b)->SetMetadataItem("PIXELTYPE", "SIGNEDBYTE", "IMAGE_STRUCTURE");
+DatasetPtr create_copy(GDALDriver* driver, const std::string& path, GDALDataset& from, CSLConstList co,
+                       ErrorLog& log, const ProgressSlice& slice, const std::string& shown) {
+  log.reset();
+  DatasetPtr out(driver->CreateCopy(path.c_str(), &from, FALSE, co, &ProgressSlice::call,
+                                    const_cast<ProgressSlice*>(&slice)));
+  if (!out) {
+    if (CPLGetLastErrorNo() == CPLE_UserInterrupt) throw Failure(CPLE_UserInterrupt, "cancelled by the user");
+    const std::string why = log.first_failure().empty() ? CPLGetLastErrorMsg() : log.first_failure();
+    throw Failure(CPLE_FileIO, "cannot write '" + shown + "': " + why);
   }
-  return work;
+  return out;
+}
+
+// Reopen a dataset that CreateCopy returned, for update (flushes it first).
+DatasetPtr reopen_for_update(DatasetPtr ds, const std::string& path, const std::string& shown) {
+  ds.reset();
+  CPLErrorReset();
+  DatasetPtr again(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
+  if (!again) throw Failure(CPLE_FileIO, "cannot reopen '" + shown + "' for filling: " + CPLGetLastErrorMsg());
+  return again;
+}
+
+// An uncompressed GeoTIFF output can be filled where it lies; other formats
+// (COG, compressed GeoTIFF, PNG...) are written in one go from a filled work file.
+bool fill_output_directly(GDALDriver* driver, const CPLStringList& co) {
+  if (!EQUAL(driver->GetDescription(), "GTiff")) return false;
+  const char* compress = co.FetchNameValue("COMPRESS");
+  return !compress || EQUAL(compress, "NONE");
 }
 
 void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
@@ -200,6 +216,9 @@ void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     throw Failure(CPLE_FileIO, "writing '" + args.src + "' failed (it may be partly filled): " + log.first_failure());
 }
 
+// The source is read block by block and never held in memory: the output is
+// a streamed copy of it (or a work GeoTIFF copy) whose void cells are filled
+// in place, reading known cells and voids from the untouched source.
 void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   DatasetPtr src = open_raster(args.src, false, "raster");
   const std::vector<int> bands = select_bands(*src, args.bands);
@@ -207,18 +226,31 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   GDALRasterBand* mask = open_mask(args, *src, mask_ds);
   GDALDriver* driver = output_driver(args);
   const CPLStringList co = creation_options(args, driver, log);
-  DatasetPtr work = work_copy(*src);
-  fill_bands(*work, *src, bands, mask, args, ProgressSlice{progress, 0.0, 0.85});
   TempOutput out(args.dst, driver);
-  log.reset();
-  ProgressSlice write{progress, 0.85, 1.0};
-  DatasetPtr dst(driver->CreateCopy(out.path().c_str(), work.get(), FALSE, co.List(), &ProgressSlice::call, &write));
-  if (!dst) {
-    if (CPLGetLastErrorNo() == CPLE_UserInterrupt) throw Failure(CPLE_UserInterrupt, "cancelled by the user");
-    const std::string why = log.first_failure().empty() ? CPLGetLastErrorMsg() : log.first_failure();
-    throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + why);
+  if (fill_output_directly(driver, co)) {
+    DatasetPtr dst = create_copy(driver, out.path(), *src, co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
+    dst = reopen_for_update(std::move(dst), out.path(), args.dst);
+    for (int b = 1; b <= src->GetRasterCount(); ++b) copy_band_info(*src->GetRasterBand(b), *dst->GetRasterBand(b));
+    log.reset();
+    fill_bands(*dst, *src, bands, mask, args, ProgressSlice{progress, 0.1, 1.0});
+    dst.reset();  // close: flushes the last blocks
+  } else {
+    GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
+    TempOutput work(args.dst + ".work.tif", gtiff);  // never committed: removed at the end
+    CPLStringList work_co;
+    work_co.AddNameValue("TILED", "YES");
+    work_co.AddNameValue("BIGTIFF", "IF_SAFER");
+    DatasetPtr tmp =
+        create_copy(gtiff, work.path(), *src, work_co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
+    tmp = reopen_for_update(std::move(tmp), work.path(), args.dst);
+    for (int b = 1; b <= src->GetRasterCount(); ++b) copy_band_info(*src->GetRasterBand(b), *tmp->GetRasterBand(b));
+    log.reset();
+    fill_bands(*tmp, *src, bands, mask, args, ProgressSlice{progress, 0.1, 0.85});
+    tmp->FlushCache();
+    if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
+    DatasetPtr dst = create_copy(driver, out.path(), *tmp, co.List(), log, ProgressSlice{progress, 0.85, 1.0}, args.dst);
+    dst.reset();
   }
-  dst.reset();  // close: flushes the last blocks
   if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
   out.commit();
 }

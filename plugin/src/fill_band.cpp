@@ -1,12 +1,13 @@
 #include "fill_band.hpp"
 
+#include <algorithm>
+#include <stdexcept>
 #include <string>
 
+#include "band_access.hpp"
 #include "band_window.hpp"
 #include "errors.hpp"
-#include "mcmd/distance.hpp"
-#include "mcmd/fill.hpp"
-#include "mcmd/padding.hpp"
+#include "mcmd/tiled_fill.hpp"
 
 namespace mcmd::gdal {
 
@@ -16,35 +17,14 @@ std::string band_name(const FillRequest& r) {
   return r.band_number > 0 ? "band " + std::to_string(r.band_number) : "the band";
 }
 
-void check_fillable(const WindowData& d, const FillRequest& r) {
-  if (r.require_void_marker && !d.voids_marked)
-    throw Failure(CPLE_AppDefined, band_name(r) +
-                                       " has no nodata value, mask or NaN cell: nothing marks the voids "
-                                       "(set a nodata value, e.g. gdal_edit.py -a_nodata, or pass -mask)");
-  if (d.void_count == d.z.size())
-    throw Failure(CPLE_AppDefined, band_name(r) + " has no valid cell: nothing to fill from");
+void fail_unmarked(const FillRequest& r) {
+  throw Failure(CPLE_AppDefined, band_name(r) +
+                                     " has no nodata value, mask or NaN cell: nothing marks the voids "
+                                     "(set a nodata value, e.g. gdal_edit.py -a_nodata, or pass -mask)");
 }
 
-// Cells to write: void cells within max_distance of a valid cell (0 = all voids).
-std::vector<std::uint8_t> cells_to_write(const WindowData& d, double max_distance) {
-  std::vector<std::uint8_t> write(d.valid.size());
-  for (std::size_t i = 0; i < write.size(); ++i) write[i] = d.valid[i] ? 0 : 1;
-  if (max_distance <= 0) return write;
-  const std::vector<double> dist = distance_to_valid(d.valid.data(), d.win.w, d.win.h);
-  for (std::size_t i = 0; i < write.size(); ++i)
-    if (dist[i] > max_distance) write[i] = 0;
-  return write;
-}
-
-// Fill the window's voids; returns the window's elevations with voids filled.
-std::vector<double> fill_window(const WindowData& d, const Options& options, const ProgressFn& progress) {
-  const int n = levels_to_cover(d.win.w, d.win.h);
-  Grid grid = mirror_padded_grid(d.z.data(), d.valid.data(), d.win.w, d.win.h, n);
-  fill(grid, options.fill, progress);
-  std::vector<double> out(d.z.size());
-  for (int y = 0; y < d.win.h; ++y)
-    for (int x = 0; x < d.win.w; ++x) out[static_cast<std::size_t>(y) * d.win.w + x] = grid.z(x, y);
-  return out;
+void fail_no_valid(const FillRequest& r) {
+  throw Failure(CPLE_AppDefined, band_name(r) + " has no valid cell: nothing to fill from");
 }
 
 }  // namespace
@@ -54,26 +34,51 @@ GDALRasterBand* own_mask(GDALRasterBand& band) {
 }
 
 void check_band(GDALRasterBand& band, const FillRequest& request) {
+  // Stream full-width row blocks of about a million cells: memory stays bounded.
   const PixelType type = pixel_type_of(band);
-  const Window win{0, 0, band.GetXSize(), band.GetYSize()};
-  check_fillable(read_window(band, type, request.masks, win, request.use_nodata), request);
+  const int W = band.GetXSize(), H = band.GetYSize();
+  const int rows = std::clamp((1 << 20) / std::max(W, 1), 1, std::max(H, 1));
+  std::size_t voids = 0;
+  bool marked = !request.masks.empty();
+  for (int y = 0; y < H; y += rows) {
+    const WindowData d = read_window(band, type, request.masks, Window{0, y, W, std::min(rows, H - y)},
+                                     request.use_nodata);
+    voids += d.void_count;
+    marked = marked || d.voids_marked;
+  }
+  if (request.require_void_marker && !marked) fail_unmarked(request);
+  if (voids == static_cast<std::size_t>(W) * static_cast<std::size_t>(H)) fail_no_valid(request);
 }
 
-void fill_band(GDALRasterBand& band, const FillRequest& request, const Options& options,
+void fill_band(GDALRasterBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
                const ProgressFn& progress) {
-  const PixelType type = pixel_type_of(band);
-  const Window win{0, 0, band.GetXSize(), band.GetYSize()};
-  const WindowData data = read_window(band, type, request.masks, win, request.use_nodata);
-  check_fillable(data, request);
-  report(progress, 0.0);
-  if (data.void_count == 0) {
-    report(progress, 1.0);
-    return;
+  BandAccess band(source, target, request);
+  TilingParams tiling;
+  tiling.tile_side = options.tile_size;
+  tiling.threads = options.num_threads;
+  tiling.max_distance = options.max_distance;
+  TiledFillStats stats;
+  TiledFillHooks hooks;
+  hooks.stats = &stats;
+  const bool marked = !request.masks.empty() || band.nodata_marks_voids();
+  // The core's passes take [0, 0.99]: 100% ("done") is reported only once the
+  // band is known to have been fillable, and a cancel at the core's last
+  // report (before it writes a one-tile raster) leaves the band untouched.
+  const ProgressFn capped = sub_progress(progress, 0.0, 0.99);
+  try {
+    tiled_fill(band.access(), options.fill, tiling, capped, hooks);
+  } catch (const std::invalid_argument&) {
+    // Checked after the first pass, before anything is written.
+    if (stats.void_cells > 0 && stats.known_cells == 0) fail_no_valid(request);
+    throw;
   }
-  const std::vector<std::uint8_t> write = cells_to_write(data, options.max_distance);
-  const std::vector<double> filled = fill_window(data, options, sub_progress(progress, 0.05, 0.95));
-  write_cells(band, type, win, filled, write);
+  // Nothing was written when no cell is void.
+  if (request.require_void_marker && !marked && stats.void_cells == 0) fail_unmarked(request);
   report(progress, 1.0);
+}
+
+void fill_band(GDALRasterBand& band, const FillRequest& request, const Options& options, const ProgressFn& progress) {
+  fill_band(band, band, request, options, progress);
 }
 
 }  // namespace mcmd::gdal

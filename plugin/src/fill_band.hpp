@@ -1,6 +1,6 @@
-// Fill the voids of one band in place: read → mirror-pad → mcmd::fill → write
-// back only the void cells. Whole band in memory for now; the read/fill/write
-// step works on a Window so tiled streaming can replace the single window.
+// Fill the voids of one band through the core's tiled fill (docs/tiling.md):
+// block-wise reads of the source band and its masks, writes of the filled void
+// cells only; memory bounded by the tile size and thread count.
 #pragma once
 
 #include <vector>
@@ -25,9 +25,16 @@ GDALRasterBand* own_mask(GDALRasterBand& band);
 // them (nothing marks voids, no valid cell), without writing anything.
 void check_band(GDALRasterBand& band, const FillRequest& request);
 
-// Fill `band`. Throws Failure (no valid cell, nothing marks voids, I/O),
+// Fill the voids of `source` (its NaN cells, nodata and request.masks) into
+// `target`, a band of the same size holding the same known cells (the source
+// itself for in-place filling, or a copy). Only void cells of target are
+// written. Throws Failure (no valid cell, nothing marks voids, I/O),
 // Cancelled, OptionError, std::invalid_argument, std::bad_alloc.
 // A band with no void cell is left untouched.
+void fill_band(GDALRasterBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
+               const ProgressFn& progress);
+
+// In place: fill_band(band, band, ...).
 void fill_band(GDALRasterBand& band, const FillRequest& request, const Options& options,
                const ProgressFn& progress);
 

@@ -7,6 +7,7 @@
 #include "cli_errors.hpp"
 #include "cli_help.hpp"
 #include "cli_run.hpp"
+#include "cpl_conv.h"
 #include "gdal.h"
 
 namespace {
@@ -38,11 +39,17 @@ int fail(const std::string& msg) {
 
 }  // namespace
 
+constexpr GIntBig kDefaultCacheBytes = GIntBig{64} << 20;
+
 int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);  // a file size limit becomes a write error, not a kill
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
   GDALAllRegister();
+  // GDAL's default block cache is 5% of RAM: with a raster streamed through
+  // tiles that makes peak memory grow with the raster. A fixed cache keeps it
+  // bounded; GDAL_CACHEMAX (environment or --config) still wins.
+  if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(kDefaultCacheBytes);
   mcmd::cli::ErrorLog log;
   try {
     const mcmd::cli::Args args = mcmd::cli::parse_args(argc, argv);

@@ -18,8 +18,8 @@ class OptionError : public std::invalid_argument {
 struct Options {
   FillParams fill{};          // algorithm parameters handed to mcmd::fill
   double max_distance = 0.0;  // cells; 0 = unlimited
-  int tile_size = 0;          // 2^n+1 cells; 0 = automatic (reserved for tiling)
-  int num_threads = 0;        // 0 = all CPUs (reserved for tiling)
+  int tile_size = 0;          // 2^n+1 cells; 0 = automatic (mcmd::TilingParams::tile_side)
+  int num_threads = 0;        // 0 = all CPUs
 };
 
 // Parse NAME=VALUE strings (names case-insensitive). Throws OptionError.
