@@ -6,6 +6,7 @@
 
 #include "mcmd/distance.hpp"
 #include "mcmd/padding.hpp"
+#include "mcmd/thin_plate_schedule.hpp"
 
 namespace mcmd {
 
@@ -75,6 +76,28 @@ double plane_at_lattice(double n, double z, double x, double y, double xx, doubl
 }
 }  // namespace
 
+// A pure thin plate extends the slopes at a void's edge linearly: fine across
+// a blob, but across a void thousands of cells wide (half an SRTM tile) it
+// builds mountains and trenches out of a coastline. When some void cell lies
+// far from any data, the guide becomes a thin plate under tension, whose
+// membrane term lets slopes level off over kSlopeReach cells instead. The
+// tension ramps in with the void's reach so that ordinary voids, whose shape
+// the guide also sets on small rasters, keep the plain thin plate.
+constexpr double kSlopeReach = 64.0;        // raster cells
+constexpr double kTensionFrom = 128.0;      // farthest void cell from data: no tension below
+constexpr double kTensionFull = 512.0;      // full tension above
+
+void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, const ProgressFn& progress) const {
+  if (params.method != Method::mcmd) return fill(g, params, progress);
+  double farthest = 0.0;
+  for (double d : distance_to_valid(known_.data(), cw_, ch_)) farthest = std::max(farthest, d * stride_);
+  const double ramp = std::clamp((farthest - kTensionFrom) / (kTensionFull - kTensionFrom), 0.0, 1.0);
+  ThinPlateSchedule schedule;
+  const double reach = kSlopeReach / stride_;  // in lattice cells
+  schedule.tension = ramp * ramp * (3.0 - 2.0 * ramp) / (reach * reach);
+  thin_plate_fill_scheduled(g, params, schedule, progress);
+}
+
 bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
   std::vector<double> mean(moments_.size(), 0.0);
   std::vector<std::uint8_t> known(moments_.size(), 0);
@@ -92,7 +115,7 @@ bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
   value_ = mean;
   if (known_count < value_.size()) {
     Grid g = mirror_padded_grid(mean.data(), known.data(), cw_, ch_, levels_to_cover(cw_, ch_));
-    fill(g, params, progress);
+    fill_lattice(g, params, progress);
     for (int j = 0; j < ch_; ++j)
       for (int i = 0; i < cw_; ++i) value_[static_cast<std::size_t>(j) * cw_ + i] = g.z(i, j);
   }

@@ -427,3 +427,22 @@ TEST(TiledFill, RejectsBadInput) {
   std::fill(empty.valid.begin(), empty.valid.end(), 0);
   EXPECT_THROW(tiled_fill(empty.access(), FillParams{}, TilingParams{}), std::invalid_argument);
 }
+
+TEST(TiledFill, HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains) {
+  // Half an SRTM tile void above a coast: sea (0 m) on the left, a slope
+  // climbing 6 m per cell towards the void on the right. A plain thin plate
+  // carries that slope a thousand cells into the void; the guide's tension
+  // must level it off near the data's range.
+  MemRaster r(1100, 1100);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) {
+      const int from_void = y - 900;  // rows 900.. are known
+      r.z[r.at(x, y)] = x < 550 ? 0.0 : std::max(0.0, 1000.0 - 6.0 * from_void);
+      r.valid[r.at(x, y)] = y >= 900;
+    }
+  const std::vector<double> out = run(r, 0, 2);
+  ASSERT_TRUE(r.complete());
+  const auto [lo, hi] = std::minmax_element(out.begin(), out.end());
+  EXPECT_LT(*hi, 1400.0);  // known range 0..1000
+  EXPECT_GT(*lo, -400.0);
+}

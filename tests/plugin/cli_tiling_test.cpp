@@ -65,7 +65,9 @@ TEST(CliTiling, TileSizesFillTestdataCompletelyAndAlike) {
     const std::vector<double> v = band_values(out);
     for (std::size_t i = 0; i < v.size(); ++i) {
       ASSERT_NE(v[i], -32768.0) << "unfilled cell with -tile " << tile;
-      if (in[i] != -32768.0) ASSERT_EQ(v[i], in[i]) << "known cell changed with -tile " << tile;
+      if (in[i] != -32768.0) {
+        ASSERT_EQ(v[i], in[i]) << "known cell changed with -tile " << tile;
+      }
     }
     errors.push_back(rmse(v, t, in, -32768.0));
   }

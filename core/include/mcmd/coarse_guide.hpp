@@ -56,6 +56,8 @@ class CoarseGuide {
   double coarse_distance(long long x, long long y) const;
 
  private:
+  // Fill the lattice's unknown points (thin plate under tension for the default method).
+  void fill_lattice(Grid& g, const FillParams& params, const ProgressFn& progress) const;
   int width_ = 1, height_ = 1, stride_ = 1, cw_ = 1, ch_ = 1;
   struct Moments {  // of the known cells of a block, offsets from the lattice point
     double n = 0, z = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0, zx = 0, zy = 0;
