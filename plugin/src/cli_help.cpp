@@ -85,6 +85,10 @@ tile size and thread count, not on the raster size; docs/tiling.md):
 
 Example:
   mcmd_fillnodata -of GTiff -co COMPRESS=DEFLATE dem_with_holes.tif dem_filled.tif
+
+Method: F. Belhadj, "Terrain modeling: a constrained fractal model", AFRIGRAPH
+2007, pp. 197-204 (MCMD). The default method keeps its bottom-up/top-down
+structure with thin-plate relaxation (docs/default-method.md).
 )";
 }
 
