@@ -49,17 +49,7 @@ rm -rf "$dest"
 if [ "$link" -eq 1 ]; then
   ln -s "$src" "$dest"
 else
-  mkdir -p "$dest"
-  (cd "$src" && find . -name __pycache__ -prune -o -type f ! -name '*.pyc' -print) |
-    while IFS= read -r f; do
-      mkdir -p "$dest/$(dirname "$f")"
-      cp "$src/$f" "$dest/$f"
-    done
-fi
-if [ -n "$cli" ]; then
-  [ -x "$cli" ] || { echo "install.sh: error: $cli is not an executable" >&2; exit 1; }
-  mkdir -p "$dest/bin"
-  cp "$cli" "$dest/bin/mcmd_fillnodata"
+  sh "$here/copy_plugin.sh" "$dest" "$cli"
 fi
 echo "Installed the mcmd_provider plugin in $dest"
 echo "Enable it in QGIS: Plugins > Manage and Install Plugins > Installed > MCMD void fill"

@@ -24,17 +24,7 @@ mkdir -p "$(dirname "$out")"
 out=$(cd "$(dirname "$out")" && pwd)/$(basename "$out")
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT INT TERM
-mkdir "$stage/mcmd_provider"
-(cd "$here/mcmd_provider" && find . -name __pycache__ -prune -o -type f ! -name '*.pyc' -print) |
-  while IFS= read -r f; do
-    mkdir -p "$stage/mcmd_provider/$(dirname "$f")"
-    cp "$here/mcmd_provider/$f" "$stage/mcmd_provider/$f"
-  done
-if [ -n "$cli" ]; then
-  mkdir -p "$stage/mcmd_provider/bin"
-  cp "$cli" "$stage/mcmd_provider/bin/mcmd_fillnodata"
-  chmod 755 "$stage/mcmd_provider/bin/mcmd_fillnodata"
-fi
+sh "$here/copy_plugin.sh" "$stage/mcmd_provider" "$cli"
 rm -f "$out"
 # Python's zipfile is everywhere QGIS is; the zip command is not.
 (cd "$stage" && /usr/bin/env python3 - "$out" <<'PY'
