@@ -21,7 +21,7 @@ std::vector<std::array<int, 2>> covering_tiles(const TileAxis& axis) {
 }  // namespace
 
 ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, CoarseGuide* guide,
-                       const ProgressFn& progress) {
+                       const ProgressFn& progress, ComponentFinder* components) {
   const int W = raster.width, H = raster.height;
   const int nx = layout.x.count();
   const int chunk = std::clamp((1 << 20) / W, 1, H);
@@ -54,6 +54,7 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
           if (cx[x][1] >= 0) row_void[cx[x][1]] = 1;
         }
       }
+      if (components) components->add_row(y0 + r, vr);
       s.known += known;
       s.voids += static_cast<std::size_t>(W) - known;
       if (known == static_cast<std::size_t>(W)) continue;

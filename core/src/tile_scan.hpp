@@ -9,6 +9,7 @@
 #include "mcmd/progress.hpp"
 #include "mcmd/tile_layout.hpp"
 #include "mcmd/tiled_fill.hpp"
+#include "void_components.hpp"
 
 namespace mcmd::detail {
 
@@ -21,8 +22,9 @@ struct ScanResult {
 };
 
 // Read the raster in full-width row blocks of about a million cells, count
-// known and void cells, feed `guide` (may be null), mark the tiles to solve.
+// known and void cells, feed `guide` and `components` (either may be null),
+// mark the tiles to solve.
 ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, CoarseGuide* guide,
-                       const ProgressFn& progress);
+                       const ProgressFn& progress, ComponentFinder* components = nullptr);
 
 }  // namespace mcmd::detail

@@ -340,7 +340,14 @@ TEST(TiledFill, VoidFreeTilesAreNotSolved) {
   hooks.stats = &stats;
   run(r, 65, 2, hooks);
   EXPECT_EQ(stats.tiles_x * stats.tiles_y, 49);
-  EXPECT_EQ(stats.windows_solved, 1u);
+  EXPECT_EQ(stats.windows_solved, 0u);  // a small void is solved alone
+  EXPECT_EQ(stats.small_components, 1u);
+  EXPECT_TRUE(r.complete());
+
+  punch_disc(r, 300, 300, 60);  // larger than a small grid at tile 65 (extent > 129 - 16)
+  run(r, 65, 2, hooks);
+  EXPECT_EQ(stats.small_components, 1u);
+  EXPECT_EQ(stats.windows_solved, 9u);  // the tiles whose output region meets its box
   EXPECT_TRUE(r.complete());
 
   MemRaster clean(100, 100);
@@ -445,4 +452,81 @@ TEST(TiledFill, HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains) {
   const auto [lo, hi] = std::minmax_element(out.begin(), out.end());
   EXPECT_LT(*hi, 1400.0);  // known range 0..1000
   EXPECT_GT(*lo, -400.0);
+}
+
+// Small voids (docs/tiling.md, "Small voids"): a component whose box fits a
+// small grid is solved alone in a grid placed by its box, so its values do
+// not depend on the tile layout, equal a direct fill of that grid, and every
+// cell of it is written exactly once.
+TEST(TiledFill, SmallVoidIsSolvedAloneWhateverTheTiles) {
+  MemRaster r(400, 300);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  punch_disc(r, 128, 128, 6);  // on a seam crossing of tiles 33, 65 and 129
+  punch_disc(r, 3, 200, 6);    // against the raster's left border (mirrored)
+  const std::vector<double> a = run(r, 33, 2);
+  for (std::size_t i = 0; i < r.write_count.size(); ++i) EXPECT_EQ(r.write_count[i], r.valid[i] ? 0 : 1);
+  const std::vector<double> b = run(r, 65, 1);
+  const std::vector<double> c = run(r, 129, 3);
+  EXPECT_TRUE(bit_identical(a, b));
+  EXPECT_TRUE(bit_identical(a, c));
+
+  // The same values as mcmd::fill on the component's grid: side 2^k+1 >= box
+  // side + 2·8, centred on the box (13×13 box -> 33² grid at 128 - 16). No
+  // cell is farther than the guide radius (8 here) from data: no guide pin.
+  Grid g(5, 128 - 16, 128 - 16);
+  for (int v = 0; v < g.side(); ++v)
+    for (int u = 0; u < g.side(); ++u) {
+      const std::size_t i = r.at(g.origin_x() + u, g.origin_y() + v);
+      g.z(u, v) = r.z[i];
+      g.state(u, v) = r.valid[i] ? CellState::known : CellState::unknown;
+    }
+  FillParams p;  // the tiled fill's noise unit: the known range of the raster
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t i = 0; i < r.z.size(); ++i)
+    if (r.valid[i]) lo = std::min(lo, r.z[i]), hi = std::max(hi, r.z[i]);
+  p.noise_unit = hi - lo;
+  fill(g, p);
+  for (int v = 0; v < g.side(); ++v)
+    for (int u = 0; u < g.side(); ++u) {
+      const std::size_t i = r.at(g.origin_x() + u, g.origin_y() + v);
+      if (!r.valid[i]) EXPECT_EQ(a[i], g.z(u, v)) << u << "," << v;
+    }
+}
+
+TEST(TiledFill, SmallAndLargeVoidsTogetherAreDeterministic) {
+  MemRaster r = make_raster(401, 303, 0.01);  // scattered single cells: small components
+  punch_disc(r, 200, 150, 70);                // a large one across several tiles
+  punch_disc(r, 64, 64, 12);                  // a small one on a seam crossing
+  TiledFillStats stats;
+  TiledFillHooks hooks;
+  hooks.stats = &stats;
+  const std::vector<double> one = run(r, 65, 1, hooks);
+  EXPECT_GT(stats.small_components, 100u);
+  EXPECT_GT(stats.windows_solved, 0u);
+  EXPECT_TRUE(r.complete());
+  EXPECT_EQ(r.known_writes, 0u);
+  for (std::size_t i = 0; i < r.write_count.size(); ++i) EXPECT_EQ(r.write_count[i], r.valid[i] ? 0 : 1);
+  EXPECT_TRUE(bit_identical(one, run(r, 65, 2)));
+  EXPECT_TRUE(bit_identical(one, run(r, 65, 4)));
+  TiledFillHooks shuffled;
+  shuffled.reorder = [](std::vector<std::size_t>& order) {
+    std::mt19937 rng(3);
+    std::shuffle(order.begin(), order.end(), rng);
+  };
+  EXPECT_TRUE(bit_identical(one, run(r, 65, 3, shuffled)));
+  // Scattered single cells, solved alone, are close to the terrain.
+  double se = 0;
+  std::size_t n = 0;
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) {
+      const std::size_t i = r.at(x, y);
+      if (r.valid[i] || std::hypot(x - 200, y - 150) < 85 || std::hypot(x - 64, y - 64) < 15 ||
+          std::hypot(x - 0.4 * r.w, y - 0.6 * r.h) < 0.12 * r.w + 15)  // make_raster's disc
+        continue;
+      se += (one[i] - r.z[i]) * (one[i] - r.z[i]);
+      ++n;
+    }
+  ASSERT_GT(n, 100u);
+  EXPECT_LT(std::sqrt(se / n), 1.0);
 }

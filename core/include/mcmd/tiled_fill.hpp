@@ -46,7 +46,8 @@ struct TiledFillStats {
   int tile_side = 0;
   int tiles_x = 0;
   int tiles_y = 0;
-  std::size_t windows_solved = 0;  // tiles whose output region holds a void
+  std::size_t windows_solved = 0;  // tiles whose output region holds a void (of a large component)
+  std::size_t small_components = 0;  // void components solved alone (docs/tiling.md)
   int guide_stride = 0;            // 0: no guide (a single tile)
   std::size_t known_cells = 0;
   std::size_t void_cells = 0;
