@@ -17,8 +17,11 @@
 
 namespace mcmd::detail {
 
-// Known cells kept around a component's bounding box, at least, on every side.
+// Cells kept around a component's bounding box, at least, on every side:
+// kSmallVoidMargin + extent / kSmallVoidMarginDivisor (extent: the box's longer side).
 constexpr int kSmallVoidMargin = 8;
+constexpr int kSmallVoidMarginDivisor = 8;
+int small_void_margin(int extent);
 
 // The largest bounding-box side solved alone: its grid is never larger than
 // a window of the layout. Below 1: no component is solved alone.
