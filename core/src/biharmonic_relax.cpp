@@ -133,8 +133,9 @@ double residual_at(const Lattice& lat, const double* rhs, int x, int y) {
   const int side = lat.side;
   const std::size_t i = lat.index(x, y);
   const bool inside = x >= 2 && y >= 2 && x <= side - 3 && y <= side - 3;
-  const double az = inside ? interior_az(lat.z.data(), side, i, lat.tension)
-                           : thin_plate_row(lat.z.data(), side, x, y, lat.tension).az;
+  double az = inside ? interior_az(lat.z.data(), side, i, lat.tension)
+                     : thin_plate_row(lat.z.data(), side, x, y, lat.tension).az;
+  if (!lat.spring.empty()) az += lat.spring[i] * (lat.z[i] - lat.target[i]);
   return (rhs ? rhs[i] : 0.0) - az;
 }
 

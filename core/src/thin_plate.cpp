@@ -17,10 +17,11 @@
 //     estimates act as springs (stiffness ∝ constraint density) away from
 //     pinned cells: they stand for the scattered samples a coarse lattice
 //     cannot hold.
-//  3. Multigrid (multigrid.cpp): a few iterations of conjugate gradients
-//     preconditioned by a V-cycle at the finest level (constraint cells
-//     Dirichlet). Deliberately not run to convergence: on large blob voids the
-//     converged thin plate overshoots (docs/default-method.md).
+//  3. Multigrid (multigrid.cpp): conjugate gradients preconditioned by a
+//     V-cycle at the finest level (constraint cells Dirichlet), to
+//     convergence, on the thin-plate energy plus a weak pull towards the
+//     cascade's fill: on large blob voids the plain converged thin plate
+//     extends the rim's slopes too far (docs/default-method.md).
 //  4. Roughness (roughness.cpp): with rs > 0 or rs auto, a constrained
 //     fractal correction is added to the smooth fill.
 //
@@ -162,6 +163,16 @@ void attach_springs(Lattice& lat, const PullLevel& est, double strength) {
     }
 }
 
+// Springs of stiffness pull_length⁻⁴ from every free cell to its current value.
+void attach_pull(Lattice& lat, double pull_length) {
+  const double stiffness = 1.0 / std::pow(pull_length, 4.0);
+  lat.spring.assign(lat.z.size(), 0.0);
+  lat.target = lat.z;
+  for (const Span& sp : lat.spans)
+    std::fill(lat.spring.begin() + static_cast<std::ptrdiff_t>(lat.index(sp.x0, sp.y)),
+              lat.spring.begin() + static_cast<std::ptrdiff_t>(lat.index(sp.x1, sp.y)), stiffness);
+}
+
 int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
   long long sweeps = s.finest_sweeps;
   for (int d = 0; d < depth_from_finest && sweeps < s.max_sweeps; ++d) sweeps *= 2;
@@ -198,7 +209,11 @@ void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinP
     report(progress, 0.05 + 0.35 * k / finest);
   }
 
-  // 3. Multigrid V-cycles at the finest level.
+  // 3. Finest level: the thin plate with a soft pull towards the cascade's
+  // fill, solved to convergence (a well-posed problem; deep inside large
+  // voids the pull keeps the coarse levels' estimate instead of extending
+  // the rim's slopes, docs/default-method.md).
+  if (schedule.pull_length > 0) attach_pull(levels[finest], schedule.pull_length);
   Multigrid mg(levels[finest], schedule.vcycle);
   if (schedule.pcg_tol > 0) {
     mg.solve_pcg(levels[finest], schedule.pcg_tol, schedule.pcg_max_iterations);

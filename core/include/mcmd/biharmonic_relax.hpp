@@ -32,7 +32,8 @@ ThinPlateRow thin_plate_row(const double* z, int side, int x, int y, double tens
 // be null for 0), factor `omega` (1 = Gauss-Seidel). Pinned cells never change.
 void relax(Lattice& lat, const double* rhs, int sweeps, double omega = 1.0);
 
-// rhs - A z at one cell (rhs may be null).
+// rhs - A z at one cell (rhs may be null); with springs, A includes the soft
+// data term: (A z)_p += spring_p (z_p - target_p).
 double residual_at(const Lattice& lat, const double* rhs, int x, int y);
 
 // r = rhs - A z at the free cells; entries of pinned cells are left as they

@@ -35,7 +35,10 @@ class Multigrid {
   // V-cycle per iteration (flexible form: β of Polak-Ribière, so the slightly
   // non-symmetric Gauss-Seidel V-cycle is harmless), until the residual's
   // 2-norm is below rel_tol times the starting one, or max_iterations.
-  // Dot products run over the spans in a fixed order: deterministic.
+  // Springs of `finest` (Lattice::spring, target) are part of the operator;
+  // the coarse corrections ignore them (the preconditioner stays close
+  // enough for weak springs). Dot products run over the spans in a fixed
+  // order: deterministic.
   // Returns the iterations done.
   int solve_pcg(Lattice& finest, double rel_tol, int max_iterations);
 
