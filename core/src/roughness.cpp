@@ -10,9 +10,9 @@ namespace mcmd {
 
 namespace {
 
-constexpr int kOctaves = 6;      // spacings 1 .. 32 cells
-constexpr double kStrength = 0.85;  // of the terrain's curvature amplitude: measured
-                                    // Laplacian spread in voids ≈ 1 (the smooth fill adds some)
+constexpr int kOctaves = 6;         // spacings 1 .. 32 cells
+constexpr double kStrength = 0.85;  // global calibration: of the terrain's curvature amplitude
+                                    // (measured Laplacian spread in voids ≈ 1, the smooth fill adds some)
 constexpr double kGolden = 2.399963229728653;  // golden angle, radians
 
 // Semivariogram at lag d over pairs of constraint cells along x and y.
@@ -40,8 +40,54 @@ double catmull_rom(double p0, double p1, double p2, double p3, double t) {
   return p1 + 0.5 * t * (p2 - p0 + t * (2 * p0 - 5 * p1 + 4 * p2 - p3 + t * (3 * (p1 - p2) + p3 - p0)));
 }
 
-// One octave: white noise on a rotated lattice of spacing s, interpolated.
-void add_octave(const Grid& g, std::uint64_t seed, int j, double weight, std::vector<double>& out) {
+// Blocks of kBlock² cells aligned to global raster coordinates, so every
+// window of a tiled fill cuts the same blocks: the unit of local statistics
+// and of where noise is generated at all.
+constexpr int kBlock = 32;
+
+struct Blocks {
+  int n = 0;             // blocks per side
+  int ox = 0, oy = 0;    // local x + ox = position in the block lattice (cells); likewise y
+  std::vector<std::uint8_t> active;  // noise is generated in these
+  int bx(int x) const { return (x + ox) / kBlock; }
+  int by(int y) const { return (y + oy) / kBlock; }
+  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * n + i; }
+  bool inside(int i, int j) const { return i >= 0 && j >= 0 && i < n && j < n; }
+  // Local cells [x0, x1) of block column i (rows likewise), clipped to the grid.
+  int x0(int i) const { return std::max(0, i * kBlock - ox); }
+  int x1(int i, int side) const { return std::min(side, (i + 1) * kBlock - ox); }
+  int y0(int j) const { return std::max(0, j * kBlock - oy); }
+  int y1(int j, int side) const { return std::min(side, (j + 1) * kBlock - oy); }
+};
+
+int positive_mod(long long v, int m) { return static_cast<int>(((v % m) + m) % m); }
+
+// Blocks holding an unknown cell, dilated by one block, are active.
+Blocks void_blocks(const Grid& g) {
+  Blocks b;
+  b.ox = positive_mod(g.origin_x(), kBlock);
+  b.oy = positive_mod(g.origin_y(), kBlock);
+  b.n = (g.side() + kBlock - 1) / kBlock + 1;
+  std::vector<std::uint8_t> has(static_cast<std::size_t>(b.n) * b.n, 0);
+  for (int y = 0; y < g.side(); ++y)
+    for (int x = 0; x < g.side(); ++x)
+      if (!is_constraint(g.state(x, y))) has[b.index(b.bx(x), b.by(y))] = 1;
+  b.active.assign(has.size(), 0);
+  for (int j = 0; j < b.n; ++j)
+    for (int i = 0; i < b.n; ++i) {
+      if (!has[b.index(i, j)]) continue;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+          if (b.inside(i + di, j + dj)) b.active[b.index(i + di, j + dj)] = 1;
+    }
+  return b;
+}
+
+// One octave: white noise on a rotated lattice of spacing 2^j, interpolated
+// with Catmull-Rom splines, added to `out` at the cells of active blocks. The
+// nodes are a function of global coordinates: any window sees the same field.
+void add_octave(const Grid& g, const Blocks& blocks, std::uint64_t seed, int j, double weight,
+                std::vector<double>& out) {
   const double s = std::ldexp(1.0, j);
   const double c = std::cos(j * kGolden) / s, sn = std::sin(j * kGolden) / s;
   const double ox = 0.618 * j, oy = 0.382 * j;
@@ -49,51 +95,152 @@ void add_octave(const Grid& g, std::uint64_t seed, int j, double weight, std::ve
     u = c * gx + sn * gy + ox;
     v = -sn * gx + c * gy + oy;
   };
-  // Node box covering the grid's corners in (u, v).
-  const double gx0 = static_cast<double>(g.origin_x()), gy0 = static_cast<double>(g.origin_y());
-  const double gx1 = gx0 + g.side() - 1, gy1 = gy0 + g.side() - 1;
-  double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300;
-  for (double gx : {gx0, gx1})
-    for (double gy : {gy0, gy1}) {
-      double u, v;
-      uv(gx, gy, u, v);
-      umin = std::min(umin, u); umax = std::max(umax, u);
-      vmin = std::min(vmin, v); vmax = std::max(vmax, v);
-    }
-  const long long i0 = static_cast<long long>(std::floor(umin)) - 1, j0 = static_cast<long long>(std::floor(vmin)) - 1;
-  const int nu = static_cast<int>(std::floor(umax) - i0) + 3, nv = static_cast<int>(std::floor(vmax) - j0) + 3;
-  std::vector<double> node(static_cast<std::size_t>(nu) * nv);
   const std::uint64_t key = seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1);
-  for (int b = 0; b < nv; ++b)
-    for (int a = 0; a < nu; ++a)
-      node[static_cast<std::size_t>(b) * nu + a] = std::sqrt(3.0) * hash_uniform(key, i0 + a, j0 + b);
-  for (int y = 0; y < g.side(); ++y)
-    for (int x = 0; x < g.side(); ++x) {
-      double u, v;
-      uv(gx0 + x, gy0 + y, u, v);
-      const long long iu = static_cast<long long>(std::floor(u)), iv = static_cast<long long>(std::floor(v));
-      const double tu = u - iu, tv = v - iv;
-      double col[4];
-      for (int r = 0; r < 4; ++r) {
-        const double* p = node.data() + static_cast<std::size_t>(iv - 1 + r - j0) * nu + (iu - 1 - i0);
-        col[r] = catmull_rom(p[0], p[1], p[2], p[3], tu);
-      }
-      out[g.index(x, y)] += weight * catmull_rom(col[0], col[1], col[2], col[3], tv);
+  const double gx0 = static_cast<double>(g.origin_x()), gy0 = static_cast<double>(g.origin_y());
+  std::vector<double> node;
+  for (int bj = 0; bj < blocks.n; ++bj)
+    for (int bi = 0; bi < blocks.n; ++bi) {
+      if (!blocks.active[blocks.index(bi, bj)]) continue;
+      const int x0 = blocks.x0(bi), x1 = blocks.x1(bi, g.side());
+      const int y0 = blocks.y0(bj), y1 = blocks.y1(bj, g.side());
+      if (x1 <= x0 || y1 <= y0) continue;
+      // Node box covering the block's corners in (u, v).
+      double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300;
+      for (int cx : {x0, x1 - 1})
+        for (int cy : {y0, y1 - 1}) {
+          double u, v;
+          uv(gx0 + cx, gy0 + cy, u, v);
+          umin = std::min(umin, u); umax = std::max(umax, u);
+          vmin = std::min(vmin, v); vmax = std::max(vmax, v);
+        }
+      const long long i0 = static_cast<long long>(std::floor(umin)) - 1;
+      const long long j0 = static_cast<long long>(std::floor(vmin)) - 1;
+      const int nu = static_cast<int>(std::floor(umax) - i0) + 3, nv = static_cast<int>(std::floor(vmax) - j0) + 3;
+      node.resize(static_cast<std::size_t>(nu) * nv);
+      for (int b = 0; b < nv; ++b)
+        for (int a = 0; a < nu; ++a)
+          node[static_cast<std::size_t>(b) * nu + a] = std::sqrt(3.0) * hash_uniform(key, i0 + a, j0 + b);
+      for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+          double u, v;
+          uv(gx0 + x, gy0 + y, u, v);
+          const long long iu = static_cast<long long>(std::floor(u)), iv = static_cast<long long>(std::floor(v));
+          const double tu = u - iu, tv = v - iv;
+          double col[4];
+          for (int r = 0; r < 4; ++r) {
+            const double* p = node.data() + static_cast<std::size_t>(iv - 1 + r - j0) * nu + (iu - 1 - i0);
+            col[r] = catmull_rom(p[0], p[1], p[2], p[3], tu);
+          }
+          out[g.index(x, y)] += weight * catmull_rom(col[0], col[1], col[2], col[3], tv);
+        }
     }
 }
 
-// Variance of second differences along x and y over all cells of `z`.
-double curvature_of(const std::vector<double>& z, int side) {
+// Variance of second differences along x and y over the cells of `z` whose
+// 3-cell stencils lie in active blocks (the noise is 0 elsewhere).
+double curvature_of(const std::vector<double>& z, int side, const Blocks& b) {
+  const auto on = [&](int x, int y) { return b.active[b.index(b.bx(x), b.by(y))] != 0; };
   double sum = 0.0;
   std::size_t n = 0;
   for (int y = 1; y < side - 1; ++y)
     for (int x = 1; x < side - 1; ++x) {
+      if (!on(x, y) || !on(x - 1, y) || !on(x + 1, y) || !on(x, y - 1) || !on(x, y + 1)) continue;
       const std::size_t i = static_cast<std::size_t>(y) * side + x;
       const double dxx = z[i - 1] - 2 * z[i] + z[i + 1], dyy = z[i - side] - 2 * z[i] + z[i + side];
       sum += dxx * dxx + dyy * dyy;
       n += 2;
     }
   return n ? sum / static_cast<double>(n) : 0.0;
+}
+
+// ---- local statistics -------------------------------------------------------
+
+// Directional semivariogram sums over pairs of constraint cells (first cell in
+// the block) at lags (1,0) (0,1) (2,0) (0,2) (1,1) (1,-1): together the
+// variance of the 5-point Laplacian of a field with stationary increments,
+// 16(γx1+γy1) - 2(γx2+γy2) - 4(γ(1,1)+γ(1,-1)).
+constexpr int kLags = 6;
+constexpr int kLagDx[kLags] = {1, 0, 2, 0, 1, 1};
+constexpr int kLagDy[kLags] = {0, 1, 0, 2, 1, -1};
+// Pairs per lag before a neighbourhood's estimate is trusted: the Laplacian
+// variance is a small difference of large γ terms (about 10× cancellation).
+constexpr double kMinPairs = 2000;
+// Neighbourhoods grow to at most this many blocks around a void block; short
+// of kMinPairs there, the estimate blends into the global calibration.
+constexpr int kMaxRadius = 4;
+
+struct LagSums {
+  double sum[kLags] = {};
+  double count[kLags] = {};
+  void add(const LagSums& o, double sign = 1.0) {
+    for (int l = 0; l < kLags; ++l) {
+      sum[l] += sign * o.sum[l];
+      count[l] += sign * o.count[l];
+    }
+  }
+  double gamma(int l) const { return count[l] > 0 ? 0.5 * sum[l] / count[l] : 0.0; }
+  double min_count() const { return *std::min_element(count, count + kLags); }
+  double laplacian_variance() const {
+    return 16.0 * (gamma(0) + gamma(1)) - 2.0 * (gamma(2) + gamma(3)) - 4.0 * (gamma(4) + gamma(5));
+  }
+};
+
+// Summed-area table of the per-block lag sums: any square neighbourhood in O(1).
+class LagTable {
+ public:
+  LagTable(const Grid& g, const Blocks& b) : n_(b.n), sat_(static_cast<std::size_t>(b.n + 1) * (b.n + 1)) {
+    std::vector<LagSums> block(static_cast<std::size_t>(b.n) * b.n);
+    for (int y = 0; y < g.side(); ++y)
+      for (int x = 0; x < g.side(); ++x) {
+        if (!is_constraint(g.state(x, y))) continue;
+        LagSums& ls = block[b.index(b.bx(x), b.by(y))];
+        const double z = g.z(x, y);
+        for (int l = 0; l < kLags; ++l) {
+          const int nx = x + kLagDx[l], ny = y + kLagDy[l];
+          if (!g.contains(nx, ny) || !is_constraint(g.state(nx, ny))) continue;
+          const double d = g.z(nx, ny) - z;
+          ls.sum[l] += d * d;
+          ls.count[l] += 1;
+        }
+      }
+    for (int j = 0; j < n_; ++j)
+      for (int i = 0; i < n_; ++i) {
+        LagSums& s = sat_[at(i + 1, j + 1)];
+        s = block[b.index(i, j)];
+        s.add(sat_[at(i, j + 1)]);
+        s.add(sat_[at(i + 1, j)]);
+        s.add(sat_[at(i, j)], -1.0);
+      }
+  }
+  // Sums over blocks [i0, i1] × [j0, j1], clipped to the lattice.
+  LagSums box(int i0, int j0, int i1, int j1) const {
+    i0 = std::max(i0, 0); j0 = std::max(j0, 0);
+    i1 = std::min(i1, n_ - 1); j1 = std::min(j1, n_ - 1);
+    LagSums s = sat_[at(i1 + 1, j1 + 1)];
+    s.add(sat_[at(i0, j1 + 1)], -1.0);
+    s.add(sat_[at(i1 + 1, j0)], -1.0);
+    s.add(sat_[at(i0, j0)]);
+    return s;
+  }
+
+ private:
+  std::size_t at(int i, int j) const { return static_cast<std::size_t>(j) * (n_ + 1) + i; }
+  int n_;
+  std::vector<LagSums> sat_;
+};
+
+// Laplacian moments of the smooth fill (f) and of the conditioned noise (q)
+// over the unknown cells of one block.
+struct LapMoments {
+  double n = 0, f = 0, ff = 0, q = 0, qq = 0;
+  void add(const LapMoments& o) { n += o.n; f += o.f; ff += o.ff; q += o.q; qq += o.qq; }
+  double var_f() const { return n > 1 ? std::max(0.0, ff / n - (f / n) * (f / n)) : 0.0; }
+  double var_q() const { return n > 1 ? std::max(0.0, qq / n - (q / n) * (q / n)) : 0.0; }
+};
+
+double smoothstep(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
 }
 
 }  // namespace
@@ -123,36 +270,130 @@ RoughnessModel estimate_roughness(const Grid& grid) {
 
 std::vector<double> fractal_noise(const Grid& grid, std::uint64_t seed, double H, int octaves) {
   std::vector<double> out(grid.cell_count(), 0.0);
-  for (int j = 0; j < octaves; ++j) add_octave(grid, seed, j, std::exp2(j * H), out);
+  Blocks all = void_blocks(grid);
+  std::fill(all.active.begin(), all.active.end(), 1);
+  for (int j = 0; j < octaves; ++j) add_octave(grid, all, seed, j, std::exp2(j * H), out);
   return out;
 }
 
 void add_roughness(Grid& grid, const FillParams& params) {
-  double H = params.H, scale = 0.0;
-  std::vector<double> noise;
+  const int side = grid.side();
+  double H = params.H;
+  RoughnessModel global;
   if (params.rs_auto) {
-    const RoughnessModel m = estimate_roughness(grid);
-    if (!m.valid) return;
-    H = m.H;
-    noise = fractal_noise(grid, params.seed, H, kOctaves);
-    const double c = curvature_of(noise, grid.side());
-    scale = c > 0 ? kStrength * std::sqrt(m.curvature / c) : 0.0;
-  } else if (params.rs > 0) {
-    const double unit = params.noise_unit > 0 ? params.noise_unit : known_range(grid);
-    noise = fractal_noise(grid, params.seed, H, kOctaves);
-    scale = params.rs * unit * std::exp2(-(kOctaves - 1) * H);  // coarsest octave: rs · unit
+    global = estimate_roughness(grid);
+    if (!global.valid) return;
+    H = global.H;
+  } else if (!(params.rs > 0)) {
+    return;
   }
-  if (scale <= 0) return;
+  // Unconditioned noise on the blocks near voids only (0 elsewhere).
+  const Blocks blocks = void_blocks(grid);
+  std::vector<double> noise(grid.cell_count(), 0.0);
+  for (int j = 0; j < kOctaves; ++j) add_octave(grid, blocks, params.seed, j, std::exp2(j * H), noise);
+  // Global calibration: the noise's second-difference variance is kStrength²
+  // of the terrain's (rs auto), or the coarsest octave has amplitude rs · unit.
+  double global_scale = 0.0;
+  if (params.rs_auto) {
+    const double c = curvature_of(noise, side, blocks);
+    global_scale = c > 0 ? kStrength * std::sqrt(global.curvature / c) : 0.0;
+  } else {
+    const double unit = params.noise_unit > 0 ? params.noise_unit : known_range(grid);
+    global_scale = params.rs * unit * std::exp2(-(kOctaves - 1) * H);
+  }
   // Condition on the constraints: subtract the smooth fill of the noise's own
   // constraint values, so the correction is 0 there and grows into the voids.
-  Grid cond = grid;
-  for (std::size_t i = 0; i < cond.cell_count(); ++i) cond.elevations()[i] = noise[i];
-  FillParams smooth = params;
-  smooth.rs = 0.0;
-  smooth.rs_auto = false;
-  thin_plate_fill(cond, smooth);
-  for (std::size_t i = 0; i < grid.cell_count(); ++i)
-    if (!is_constraint(grid.states()[i])) grid.elevations()[i] += scale * (noise[i] - cond.elevations()[i]);
+  {
+    Grid cond = grid;
+    for (std::size_t i = 0; i < cond.cell_count(); ++i) cond.elevations()[i] = noise[i];
+    FillParams smooth = params;
+    smooth.rs = 0.0;
+    smooth.rs_auto = false;
+    thin_plate_fill(cond, smooth);
+    for (std::size_t i = 0; i < grid.cell_count(); ++i)
+      noise[i] = is_constraint(grid.states()[i]) ? 0.0 : noise[i] - cond.elevations()[i];
+  }
+  if (!params.rs_auto) {
+    for (std::size_t i = 0; i < grid.cell_count(); ++i)
+      if (!is_constraint(grid.states()[i])) grid.elevations()[i] += global_scale * noise[i];
+    return;
+  }
+
+  // -rs auto per neighbourhood. Each block with voids gets the Laplacian
+  // variance of the terrain around it (directional semivariogram of the
+  // constraint pairs in the smallest square of blocks with kMinPairs pairs per
+  // lag) and the scale that gives fill + noise that variance over the unknown
+  // cells of the block and its 8 neighbours. Where the pairs are too few
+  // within kMaxRadius blocks (scattered samples, the middle of huge voids),
+  // the scale blends into the global one. Scales are interpolated bilinearly
+  // between block centres: a smooth amplitude field.
+  const int nb = blocks.n;
+  const LagTable lags(grid, blocks);
+  std::vector<LapMoments> lap(static_cast<std::size_t>(nb) * nb);
+  const double* z = grid.elevations().data();
+  for (int y = 1; y < side - 1; ++y)
+    for (int x = 1; x < side - 1; ++x) {
+      if (is_constraint(grid.state(x, y))) continue;
+      const std::size_t i = grid.index(x, y);
+      const double lf = z[i - 1] + z[i + 1] + z[i - side] + z[i + side] - 4.0 * z[i];
+      const double lq = noise[i - 1] + noise[i + 1] + noise[i - side] + noise[i + side] - 4.0 * noise[i];
+      LapMoments& m = lap[blocks.index(blocks.bx(x), blocks.by(y))];
+      m.n += 1; m.f += lf; m.ff += lf * lf; m.q += lq; m.qq += lq * lq;
+    }
+  std::vector<double> scale(static_cast<std::size_t>(nb) * nb, -1.0);
+  for (int bj = 0; bj < nb; ++bj)
+    for (int bi = 0; bi < nb; ++bi) {
+      if (lap[blocks.index(bi, bj)].n == 0) continue;
+      LagSums around;
+      for (int r = 1; r <= kMaxRadius; ++r) {
+        around = lags.box(bi - r, bj - r, bi + r, bj + r);
+        if (around.min_count() >= kMinPairs) break;
+      }
+      const double target = around.laplacian_variance();
+      const double trust = target > 0 ? smoothstep((around.min_count() - 0.25 * kMinPairs) / (0.75 * kMinPairs)) : 0.0;
+      double local = 0.0;
+      if (trust > 0) {
+        LapMoments m;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di)
+            if (blocks.inside(bi + di, bj + dj)) m.add(lap[blocks.index(bi + di, bj + dj)]);
+        const double vq = m.var_q();
+        local = vq > 0 ? std::sqrt(std::max(0.0, target - m.var_f()) / vq) : 0.0;
+      }
+      scale[blocks.index(bi, bj)] = trust * local + (1.0 - trust) * global_scale;
+    }
+  // Blocks without unknown cells take the mean of their neighbours with one
+  // (they only support the interpolation).
+  std::vector<double> filled = scale;
+  for (int bj = 0; bj < nb; ++bj)
+    for (int bi = 0; bi < nb; ++bi) {
+      if (scale[blocks.index(bi, bj)] >= 0) continue;
+      double s = 0, n = 0;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          if (!blocks.inside(bi + di, bj + dj)) continue;
+          const double v = scale[blocks.index(bi + di, bj + dj)];
+          if (v >= 0) { s += v; n += 1; }
+        }
+      filled[blocks.index(bi, bj)] = n > 0 ? s / n : global_scale;
+    }
+  const auto at = [&](int bi, int bj) {
+    return filled[blocks.index(std::clamp(bi, 0, nb - 1), std::clamp(bj, 0, nb - 1))];
+  };
+  for (int y = 0; y < side; ++y) {
+    const double fy = (y + blocks.oy + 0.5) / kBlock - 0.5;
+    const int bj = static_cast<int>(std::floor(fy));
+    const double ty = fy - bj;
+    for (int x = 0; x < side; ++x) {
+      if (is_constraint(grid.state(x, y))) continue;
+      const double fx = (x + blocks.ox + 0.5) / kBlock - 0.5;
+      const int bi = static_cast<int>(std::floor(fx));
+      const double tx = fx - bi;
+      const double a = (1 - ty) * ((1 - tx) * at(bi, bj) + tx * at(bi + 1, bj)) +
+                       ty * ((1 - tx) * at(bi, bj + 1) + tx * at(bi + 1, bj + 1));
+      grid.z(x, y) += a * noise[grid.index(x, y)];
+    }
+  }
 }
 
 }  // namespace mcmd

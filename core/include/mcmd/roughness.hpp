@@ -28,8 +28,14 @@ RoughnessModel estimate_roughness(const Grid& grid);
 std::vector<double> fractal_noise(const Grid& grid, std::uint64_t seed, double H, int octaves);
 
 // Add roughness to the unknown cells of `grid`, which hold the smooth fill.
-// rs_auto: H and amplitude from estimate_roughness (the second-difference
-// variance of the noise is 0.85² of the terrain's); else rs > 0: amplitude
+// The noise is generated only in 32² blocks (aligned to global coordinates)
+// near voids and conditioned on the constraints. rs_auto: H from
+// estimate_roughness; the amplitude per block makes the 5-point Laplacian
+// variance of fill + noise over the block's voids (and its neighbours') equal
+// to the terrain's around it (directional semivariogram of the nearest
+// constraint pairs, through a summed-area table), blending into the global
+// calibration (second-difference variance of the noise 0.85² of the
+// terrain's) where too few pairs lie within 4 blocks. Else rs > 0: amplitude
 // rs · noise_unit for the coarsest octave, H = params.H. No-op otherwise.
 void add_roughness(Grid& grid, const FillParams& params);
 
