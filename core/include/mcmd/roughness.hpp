@@ -15,7 +15,8 @@ namespace mcmd {
 // horizontal and vertical pairs of constraint cells at lags 1, 2, 4, 8, 16.
 struct RoughnessModel {
   double H = 0.5;         // Hurst exponent, from the slope of log γ against log d
-  double curvature = 0.0; // variance of a second difference, 8γ(1) - 2γ(2)
+  double curvature = 0.0; // variance of a second difference: 8γ(1) - 2γ(2) from many lag-1
+                          // pairs, a calibrated fBm form γ(1)(8 - 2·4^H) from few (scattered samples)
   bool valid = false;     // enough pairs to estimate
 };
 RoughnessModel estimate_roughness(const Grid& grid);
@@ -33,9 +34,9 @@ std::vector<double> fractal_noise(const Grid& grid, std::uint64_t seed, double H
 // estimate_roughness; the amplitude per block makes the 5-point Laplacian
 // variance of fill + noise over the block's voids (and its neighbours') equal
 // to the terrain's around it (directional semivariogram of the nearest
-// constraint pairs, through a summed-area table), blending into the global
-// calibration (second-difference variance of the noise 0.85² of the
-// terrain's) where too few pairs lie within 4 blocks. Else rs > 0: amplitude
+// constraint pairs, through a summed-area table), blending into a global
+// target from estimate_roughness's curvature where too few pairs lie within
+// 4 blocks. Else rs > 0: amplitude
 // rs · noise_unit for the coarsest octave, H = params.H. No-op otherwise.
 void add_roughness(Grid& grid, const FillParams& params);
 
