@@ -76,7 +76,7 @@ Shape of the fill (what it does to the terrain):
 Performance (the band is streamed through square tiles; memory depends on the
 tile size and thread count, not on the raster size; docs/tiling.md):
   -tile size       Tile side in cells, 2^n+1 (e.g. 129, 257, 513); 0 = automatic
-                   (257, or less for a raster that fits in a smaller tile).
+                   (129, or less for a raster that fits in a smaller tile).
                    Larger tiles need more memory per thread (about 25 MB per
                    thread at 257, 90 MB at 513). The result is bit-identical
                    for a given tile size, whatever the thread count.

@@ -490,7 +490,9 @@ TEST(TiledFill, SmallVoidIsSolvedAloneWhateverTheTiles) {
   for (int v = 0; v < g.side(); ++v)
     for (int u = 0; u < g.side(); ++u) {
       const std::size_t i = r.at(g.origin_x() + u, g.origin_y() + v);
-      if (!r.valid[i]) EXPECT_EQ(a[i], g.z(u, v)) << u << "," << v;
+      if (!r.valid[i]) {
+        EXPECT_EQ(a[i], g.z(u, v)) << u << "," << v;
+      }
     }
 }
 

@@ -31,7 +31,7 @@ struct TilingParams {
   double max_distance = 0.0;  // cells; 0 = unlimited (see docs/tiling.md for its exactness)
 };
 
-constexpr int kDefaultTileSide = 257;  // measured: see docs/tiling.md
+constexpr int kDefaultTileSide = 129;  // measured: see docs/tiling.md
 
 // The tile side actually used: `requested` (0 = default), reduced to the
 // smallest 2^k + 1 (k >= 1) that covers max(width, height) when that is smaller.
