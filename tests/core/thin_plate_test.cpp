@@ -215,13 +215,14 @@ TEST(CubicProlong, ExactOnCubicsInsideAndQuadraticsAtTheBorder) {
     }
 }
 
-TEST(Multigrid, VCyclesConvergeOnScatteredConstraints) {
-  const int n = 7, side = (1 << n) + 1;
+// A 129² lattice with 4 % of its cells pinned at random heights.
+mcmd::Lattice scattered_lattice(unsigned seed) {
+  const int side = (1 << 7) + 1;
   mcmd::Lattice lat;
   lat.side = side;
   lat.z.assign(side * side, 0.0);
   lat.pinned.assign(side * side, 0);
-  std::mt19937 rng(10);
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (std::size_t i = 0; i < lat.z.size(); ++i)
     if (u(rng) < 0.04) {
@@ -229,13 +230,21 @@ TEST(Multigrid, VCyclesConvergeOnScatteredConstraints) {
       lat.z[i] = 100.0 * u(rng);
     }
   lat.spans = mcmd::free_spans(lat.pinned, side);
+  return lat;
+}
+
+// Euclidean norm of the thin-plate residual on the free cells.
+double residual_norm(const mcmd::Lattice& lat) {
   std::vector<double> r(lat.z.size(), 0.0);
-  const auto norm = [&] {
-    mcmd::residual(lat, nullptr, r);
-    double s = 0;
-    for (double v : r) s += v * v;
-    return std::sqrt(s);
-  };
+  mcmd::residual(lat, nullptr, r);
+  double s = 0;
+  for (double v : r) s += v * v;
+  return std::sqrt(s);
+}
+
+TEST(Multigrid, VCyclesConvergeOnScatteredConstraints) {
+  mcmd::Lattice lat = scattered_lattice(10);
+  const auto norm = [&] { return residual_norm(lat); };
   const double r0 = norm();
   mcmd::Multigrid mg(lat, {});
   for (int c = 0; c < 20; ++c) mg.v_cycle(lat);
@@ -245,26 +254,8 @@ TEST(Multigrid, VCyclesConvergeOnScatteredConstraints) {
 // V-cycle-preconditioned CG (flexible form) reaches a tight relative residual
 // in far fewer iterations than plain V-cycles need, and stops by its rule.
 TEST(Multigrid, PreconditionedCgConvergesOnScatteredConstraints) {
-  const int n = 7, side = (1 << n) + 1;
-  mcmd::Lattice lat;
-  lat.side = side;
-  lat.z.assign(side * side, 0.0);
-  lat.pinned.assign(side * side, 0);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (std::size_t i = 0; i < lat.z.size(); ++i)
-    if (u(rng) < 0.04) {
-      lat.pinned[i] = 1;
-      lat.z[i] = 100.0 * u(rng);
-    }
-  lat.spans = mcmd::free_spans(lat.pinned, side);
-  std::vector<double> r(lat.z.size(), 0.0);
-  const auto norm = [&] {
-    mcmd::residual(lat, nullptr, r);
-    double s = 0;
-    for (double v : r) s += v * v;
-    return std::sqrt(s);
-  };
+  mcmd::Lattice lat = scattered_lattice(11);
+  const auto norm = [&] { return residual_norm(lat); };
   const double r0 = norm();
   mcmd::Multigrid mg(lat, {});
   const int it = mg.solve_pcg(lat, 1e-6, 100);
