@@ -26,18 +26,18 @@ Scheme scheme_of(Method method) {
   throw std::invalid_argument("only the paper methods have a single subdivision scheme");
 }
 
-double known_range(const Grid& grid) {
+double known_range(std::span<const double> z, std::span<const CellState> states) {
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
-  const auto& z = grid.elevations();
-  const auto& s = grid.states();
   for (std::size_t i = 0; i < z.size(); ++i) {
-    if (!is_constraint(s[i])) continue;
+    if (!is_constraint(states[i])) continue;
     lo = std::min(lo, z[i]);
     hi = std::max(hi, z[i]);
   }
   return hi >= lo ? hi - lo : 0.0;
 }
+
+double known_range(const Grid& grid) { return known_range(grid.elevations(), grid.states()); }
 
 namespace {
 

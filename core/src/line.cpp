@@ -45,10 +45,7 @@ void top_down(std::vector<double>& z, const std::vector<CellState>& s, std::vect
   const std::array<std::uint32_t, 2> ends{0, last};
   seed_roots(z, fixed, ends);
   const double dmax = params.dmax > 0 ? params.dmax : static_cast<double>(last);
-  double lo = INFINITY, hi = -INFINITY;
-  for (std::size_t i = 0; i < z.size(); ++i)
-    if (is_constraint(s[i])) lo = std::min(lo, z[i]), hi = std::max(hi, z[i]);
-  const double unit = params.noise_unit > 0 ? params.noise_unit : (hi > lo ? hi - lo : 0.0);
+  const double unit = params.noise_unit > 0 ? params.noise_unit : known_range(z, s);
   for (int level = 0; level < n; ++level) {
     const std::uint32_t h = 1u << (n - 1 - level);
     for (std::uint32_t i = h; i < last; i += 2 * h) {

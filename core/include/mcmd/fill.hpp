@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "mcmd/delta.hpp"
 #include "mcmd/grid.hpp"
@@ -51,6 +52,8 @@ Scheme scheme_of(Method method);
 void fill(Grid& grid, const FillParams& params, const ProgressFn& progress = {});
 
 // Elevation range (max - min) over the constraint cells; 0 when there are none.
+// Pre: z and states have one entry per cell.
+double known_range(std::span<const double> z, std::span<const CellState> states);
 double known_range(const Grid& grid);
 
 }  // namespace mcmd
