@@ -7,7 +7,7 @@ namespace mcmd {
 
 namespace {
 
-// Interior cells (2 <= x, y <= side-3): every term fits, the 13-point stencil.
+// Interior cells (2 <= x <= w-3, 2 <= y <= h-3): every term fits, the 13-point stencil.
 inline double interior_az(const double* z, std::ptrdiff_t s, std::size_t i, double t) {
   const double* c = z + i;
   const double n4 = c[-1] + c[1] + c[-s] + c[s];
@@ -16,17 +16,17 @@ inline double interior_az(const double* z, std::ptrdiff_t s, std::size_t i, doub
 }
 
 // The contributions of the second differences along one axis through the cell:
-// centres p-1, p, p+1 of that axis, counted when they lie in [1, side-2].
-inline void axis_terms(const double* c, std::ptrdiff_t step, int pos, int side, ThinPlateRow& row) {
+// centres p-1, p, p+1 of that axis, counted when they lie in [1, n-2].
+inline void axis_terms(const double* c, std::ptrdiff_t step, int pos, int n, ThinPlateRow& row) {
   if (pos - 1 >= 1) {
     row.az += c[-2 * step] - 2.0 * c[-step] + c[0];
     row.diag += 1.0;
   }
-  if (pos >= 1 && pos <= side - 2) {
+  if (pos >= 1 && pos <= n - 2) {
     row.az += -2.0 * (c[-step] - 2.0 * c[0] + c[step]);
     row.diag += 4.0;
   }
-  if (pos + 1 <= side - 2) {
+  if (pos + 1 <= n - 2) {
     row.az += c[0] - 2.0 * c[step] + c[2 * step];
     row.diag += 1.0;
   }
@@ -34,8 +34,8 @@ inline void axis_terms(const double* c, std::ptrdiff_t step, int pos, int side, 
 
 }  // namespace
 
-ThinPlateRow thin_plate_row(const double* z, int side, int x, int y, double tension) {
-  const std::ptrdiff_t s = side;
+ThinPlateRow thin_plate_row(const double* z, int w, int h, int x, int y, double tension) {
+  const std::ptrdiff_t s = w;
   const double* c = z + static_cast<std::ptrdiff_t>(y) * s + x;
   ThinPlateRow row;
   if (tension > 0) {
@@ -45,18 +45,18 @@ ThinPlateRow thin_plate_row(const double* z, int side, int x, int y, double tens
       row.diag += tension;
     };
     edge(x > 0, -1);
-    edge(x < side - 1, 1);
+    edge(x < w - 1, 1);
     edge(y > 0, -s);
-    edge(y < side - 1, s);
+    edge(y < h - 1, s);
   }
-  axis_terms(c, 1, x, side, row);
-  axis_terms(c, s, y, side, row);
+  axis_terms(c, 1, x, w, row);
+  axis_terms(c, s, y, h, row);
   // 2×2 blocks with top-left (bx, by); the cell's sign is + on the block's
   // main diagonal, - on the other. Weight 2 for the mixed term.
   for (int dy = -1; dy <= 0; ++dy) {
-    if (y + dy < 0 || y + dy > side - 2) continue;
+    if (y + dy < 0 || y + dy > h - 2) continue;
     for (int dx = -1; dx <= 0; ++dx) {
-      if (x + dx < 0 || x + dx > side - 2) continue;
+      if (x + dx < 0 || x + dx > w - 2) continue;
       const double* b = c + dy * s + dx;
       const double t = b[0] - b[1] - b[s] + b[s + 1];
       const double sign = (dx == dy) ? 1.0 : -1.0;
@@ -76,7 +76,7 @@ namespace {
 // With springs (soft data term) the diagonal is 20 + spring and the target
 // joins the right-hand side.
 void relax_interior_run(Lattice& lat, std::size_t i0, int count, const double* rhs, double omega) {
-  const std::ptrdiff_t s = lat.side;
+  const std::ptrdiff_t s = lat.w;
   double* c = lat.z.data() + i0;
   const double* spring = lat.spring.empty() ? nullptr : lat.spring.data() + i0;
   const double* target = lat.target.empty() ? nullptr : lat.target.data() + i0;
@@ -103,7 +103,7 @@ void relax_interior_run(Lattice& lat, std::size_t i0, int count, const double* r
 
 void relax_border_cell(Lattice& lat, const double* rhs, int x, int y, double omega) {
   const std::size_t i = lat.index(x, y);
-  ThinPlateRow r = thin_plate_row(lat.z.data(), lat.side, x, y, lat.tension);
+  ThinPlateRow r = thin_plate_row(lat.z.data(), lat.w, lat.h, x, y, lat.tension);
   if (!lat.spring.empty()) {
     r.az += lat.spring[i] * (lat.z[i] - lat.target[i]);
     r.diag += lat.spring[i];
@@ -114,27 +114,26 @@ void relax_border_cell(Lattice& lat, const double* rhs, int x, int y, double ome
 }  // namespace
 
 void relax(Lattice& lat, const double* rhs, int sweeps, double omega) {
-  const int side = lat.side;
+  const int w = lat.w, h = lat.h;
   for (int k = 0; k < sweeps; ++k)
     for (const Span& sp : lat.spans) {
-      if (sp.y < 2 || sp.y > side - 3) {
+      if (sp.y < 2 || sp.y > h - 3) {
         for (int x = sp.x0; x < sp.x1; ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
         continue;
       }
       // Split the run into border cells on the left, interior, border on the right.
-      const int a = std::max(sp.x0, 2), b = std::min(sp.x1, side - 2);
+      const int a = std::max(sp.x0, 2), b = std::min(sp.x1, w - 2);
       for (int x = sp.x0; x < std::min(sp.x1, 2); ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
       if (b > a) relax_interior_run(lat, lat.index(a, sp.y), b - a, rhs, omega);
-      for (int x = std::max(sp.x0, side - 2); x < sp.x1; ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
+      for (int x = std::max({sp.x0, w - 2, a}); x < sp.x1; ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
     }
 }
 
 double residual_at(const Lattice& lat, const double* rhs, int x, int y) {
-  const int side = lat.side;
   const std::size_t i = lat.index(x, y);
-  const bool inside = x >= 2 && y >= 2 && x <= side - 3 && y <= side - 3;
-  double az = inside ? interior_az(lat.z.data(), side, i, lat.tension)
-                     : thin_plate_row(lat.z.data(), side, x, y, lat.tension).az;
+  const bool inside = x >= 2 && y >= 2 && x <= lat.w - 3 && y <= lat.h - 3;
+  double az = inside ? interior_az(lat.z.data(), lat.w, i, lat.tension)
+                     : thin_plate_row(lat.z.data(), lat.w, lat.h, x, y, lat.tension).az;
   if (!lat.spring.empty()) az += lat.spring[i] * (lat.z[i] - lat.target[i]);
   return (rhs ? rhs[i] : 0.0) - az;
 }

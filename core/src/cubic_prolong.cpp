@@ -25,25 +25,12 @@ Weights1D cubic_weights_1d(int x, int mc) {
   return r;
 }
 
-ProlongWeights prolong_weights(int x, int y, int mc) {
-  const Weights1D wx = cubic_weights_1d(x, mc);
-  const Weights1D wy = cubic_weights_1d(y, mc);
-  ProlongWeights p;
-  for (int j = 0; j < wy.count; ++j)
-    for (int i = 0; i < wx.count; ++i) {
-      p.index[p.count] = static_cast<std::size_t>(wy.first + j) * mc + static_cast<std::size_t>(wx.first + i);
-      p.weight[p.count] = wx.w[i] * wy.w[j];
-      ++p.count;
-    }
-  return p;
-}
-
-double prolong_at(const double* coarse, int mc, int x, int y) {
-  const Weights1D wx = cubic_weights_1d(x, mc);
-  const Weights1D wy = cubic_weights_1d(y, mc);
+double prolong_at(const double* coarse, int mw, int mh, int x, int y) {
+  const Weights1D wx = cubic_weights_1d(x, mw);
+  const Weights1D wy = cubic_weights_1d(y, mh);
   double sum = 0.0;
   for (int j = 0; j < wy.count; ++j) {
-    const double* row = coarse + static_cast<std::size_t>(wy.first + j) * mc + wx.first;
+    const double* row = coarse + static_cast<std::size_t>(wy.first + j) * mw + wx.first;
     double rs = 0.0;
     for (int i = 0; i < wx.count; ++i) rs += wx.w[i] * row[i];
     sum += wy.w[j] * rs;

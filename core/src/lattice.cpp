@@ -8,15 +8,15 @@ std::size_t Lattice::free_count() const {
   return n;
 }
 
-std::vector<Span> free_spans(const std::vector<std::uint8_t>& pinned, int side) {
+std::vector<Span> free_spans(const std::vector<std::uint8_t>& pinned, int w, int h) {
   std::vector<Span> out;
-  for (int y = 0; y < side; ++y) {
-    const std::uint8_t* row = pinned.data() + static_cast<std::size_t>(y) * side;
+  for (int y = 0; y < h; ++y) {
+    const std::uint8_t* row = pinned.data() + static_cast<std::size_t>(y) * w;
     int x = 0;
-    while (x < side) {
-      while (x < side && row[x]) ++x;
+    while (x < w) {
+      while (x < w && row[x]) ++x;
       const int x0 = x;
-      while (x < side && !row[x]) ++x;
+      while (x < w && !row[x]) ++x;
       if (x > x0) out.push_back({y, x0, x});
     }
   }
@@ -29,7 +29,7 @@ bool any_pinned_around(const Lattice& fine, int x, int y) {
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
       const int fx = x + dx, fy = y + dy;
-      if (fx < 0 || fy < 0 || fx >= fine.side || fy >= fine.side) continue;
+      if (fx < 0 || fy < 0 || fx >= fine.w || fy >= fine.h) continue;
       if (fine.pinned[fine.index(fx, fy)]) return true;
     }
   return false;
@@ -39,20 +39,27 @@ bool any_pinned_around(const Lattice& fine, int x, int y) {
 
 Lattice coarser_lattice(const Lattice& fine, CoarsePin rule) {
   Lattice c;
-  c.side = (fine.side + 1) / 2;
+  c.w = coarser_extent(fine.w);
+  c.h = coarser_extent(fine.h);
   c.tension = 4.0 * fine.tension;
-  const std::size_t cells = static_cast<std::size_t>(c.side) * c.side;
+  const std::size_t cells = static_cast<std::size_t>(c.w) * c.h;
   c.z.assign(cells, 0.0);
   c.pinned.assign(cells, 0);
-  for (int j = 0; j < c.side; ++j)
-    for (int i = 0; i < c.side; ++i) {
-      const std::size_t f = fine.index(2 * i, 2 * j);
-      const bool pin = rule == CoarsePin::position ? fine.pinned[f] != 0 : any_pinned_around(fine, 2 * i, 2 * j);
+  for (int j = 0; j < c.h; ++j)
+    for (int i = 0; i < c.w; ++i) {
+      const int fx = 2 * i, fy = 2 * j;
+      const bool inside = fx < fine.w && fy < fine.h;
+      bool pin = false;
+      if (rule == CoarsePin::position)
+        pin = inside && fine.pinned[fine.index(fx, fy)] != 0;
+      else
+        pin = any_pinned_around(fine, fx, fy);
       if (!pin) continue;
       c.pinned[c.index(i, j)] = 1;
-      c.z[c.index(i, j)] = fine.z[f];
+      // A ghost cell pinned by its neighbourhood holds a correction of 0.
+      if (inside) c.z[c.index(i, j)] = fine.z[fine.index(fx, fy)];
     }
-  c.spans = free_spans(c.pinned, c.side);
+  c.spans = free_spans(c.pinned, c.w, c.h);
   return c;
 }
 

@@ -15,13 +15,13 @@ namespace {
 // spread along y into b. Zero at pinned coarse cells.
 void restrict_residual(const Lattice& fine, const double* rhs, double scale, const Lattice& coarse,
                        std::vector<double>& row, std::vector<double>& b) {
-  const int mc = coarse.side;
+  const int mw = coarse.w, mh = coarse.h;
   std::fill(b.begin(), b.end(), 0.0);
   const auto flush = [&](int y) {
-    const Weights1D w = cubic_weights_1d(y, mc);
+    const Weights1D w = cubic_weights_1d(y, mh);
     for (int j = 0; j < w.count; ++j) {
-      double* brow = b.data() + static_cast<std::ptrdiff_t>(w.first + j) * mc;
-      for (int c = 0; c < mc; ++c) brow[c] += w.w[j] * row[c];
+      double* brow = b.data() + static_cast<std::ptrdiff_t>(w.first + j) * mw;
+      for (int c = 0; c < mw; ++c) brow[c] += w.w[j] * row[c];
     }
     std::fill(row.begin(), row.end(), 0.0);
   };
@@ -32,7 +32,7 @@ void restrict_residual(const Lattice& fine, const double* rhs, double scale, con
     current = sp.y;
     for (int x = sp.x0; x < sp.x1; ++x) {
       const double v = scale * residual_at(fine, rhs, x, sp.y);
-      const Weights1D w = cubic_weights_1d(x, mc);
+      const Weights1D w = cubic_weights_1d(x, mw);
       for (int i = 0; i < w.count; ++i) row[w.first + i] += w.w[i] * v;
     }
   }
@@ -43,20 +43,20 @@ void restrict_residual(const Lattice& fine, const double* rhs, double scale, con
 
 // fine.z += P e at the free cells, separably (along y into one row, then x).
 void add_correction(Lattice& fine, const Lattice& coarse, std::vector<double>& row) {
-  const int mc = coarse.side;
+  const int mw = coarse.w, mh = coarse.h;
   int current = -1;
   for (const Span& sp : fine.spans) {
     if (sp.y != current) {
       current = sp.y;
-      const Weights1D w = cubic_weights_1d(sp.y, mc);
+      const Weights1D w = cubic_weights_1d(sp.y, mh);
       std::fill(row.begin(), row.end(), 0.0);
       for (int j = 0; j < w.count; ++j) {
-        const double* e = coarse.z.data() + static_cast<std::ptrdiff_t>(w.first + j) * mc;
-        for (int c = 0; c < mc; ++c) row[c] += w.w[j] * e[c];
+        const double* e = coarse.z.data() + static_cast<std::ptrdiff_t>(w.first + j) * mw;
+        for (int c = 0; c < mw; ++c) row[c] += w.w[j] * e[c];
       }
     }
     for (int x = sp.x0; x < sp.x1; ++x) {
-      const Weights1D w = cubic_weights_1d(x, mc);
+      const Weights1D w = cubic_weights_1d(x, mw);
       double v = 0.0;
       for (int i = 0; i < w.count; ++i) v += w.w[i] * row[w.first + i];
       fine.z[fine.index(x, sp.y)] += v;
@@ -69,7 +69,7 @@ void add_correction(Lattice& fine, const Lattice& coarse, std::vector<double>& r
 Multigrid::Multigrid(const Lattice& finest, VCycleSchedule schedule) : schedule_(schedule) {
   const Lattice* fine = &finest;
   std::vector<Lattice> chain;
-  while (fine->side > 2 && fine->side > schedule_.coarsest_side) {
+  while ((fine->w > 2 || fine->h > 2) && std::max(fine->w, fine->h) > schedule_.coarsest_side) {
     chain.push_back(coarser_lattice(*fine, schedule_.coarse_pin));
     fine = &chain.back();
   }
@@ -95,7 +95,7 @@ void Multigrid::cycle(Lattice& fine, const double* rhs, int k) {
   }
   // Coarse right-hand side 4·Pᵀr: on unit lattices Pᵀ A_h P ≈ A_2h / 4 for the
   // 4th-order thin-plate operator (column sums of P are 4, h⁴ scaling 1/16).
-  std::vector<double> row(coarse.side);
+  std::vector<double> row(coarse.w);
   restrict_residual(fine, rhs, 4.0, coarse, row, rhs_[k]);
 
   std::fill(coarse.z.begin(), coarse.z.end(), 0.0);
@@ -130,7 +130,8 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations) {
   // Work lattice: the same free cells, pinned cells 0 (directions and
   // preconditioned residuals vanish there).
   Lattice work;
-  work.side = finest.side;
+  work.w = finest.w;
+  work.h = finest.h;
   work.tension = finest.tension;
   work.pinned = finest.pinned;
   work.spans = finest.spans;

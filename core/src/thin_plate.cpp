@@ -59,49 +59,54 @@ struct Plane {
   double at(int x, int y) const { return c + cx * (x - x0) + cy * (y - y0); }
 };
 
-Plane constraint_plane(const Grid& grid) {
+Plane constraint_plane(const FieldView& f) {
   double n = 0, sx = 0, sy = 0, sz = 0;
-  const int side = grid.side();
-  for (int y = 0; y < side; ++y)
-    for (int x = 0; x < side; ++x)
-      if (is_constraint(grid.state(x, y))) {
-        n += 1; sx += x; sy += y; sz += grid.z(x, y);
+  for (int y = 0; y < f.h; ++y)
+    for (int x = 0; x < f.w; ++x)
+      if (is_constraint(f.state_at(x, y))) {
+        n += 1; sx += x; sy += y; sz += f.z_at(x, y);
       }
   Plane p;
   if (n == 0) return p;
   p.x0 = sx / n; p.y0 = sy / n; p.c = sz / n;
   double xx = 0, xy = 0, yy = 0, xz = 0, yz = 0;
-  for (int y = 0; y < side; ++y)
-    for (int x = 0; x < side; ++x)
-      if (is_constraint(grid.state(x, y))) {
-        const double dx = x - p.x0, dy = y - p.y0, dz = grid.z(x, y) - p.c;
+  for (int y = 0; y < f.h; ++y)
+    for (int x = 0; x < f.w; ++x)
+      if (is_constraint(f.state_at(x, y))) {
+        const double dx = x - p.x0, dy = y - p.y0, dz = f.z_at(x, y) - p.c;
         xx += dx * dx; xy += dx * dy; yy += dy * dy; xz += dx * dz; yz += dy * dz;
       }
   const double det = xx * yy - xy * xy;
   if (det > 1e-9 * (xx * yy + 1e-300)) {
     p.cx = (yy * xz - xy * yz) / det;
     p.cy = (xx * yz - xy * xz) / det;
+  } else if (xx > 0 && yy == 0) {  // all on one row (a 1-row field): the line along it
+    p.cx = xz / xx;
+  } else if (yy > 0 && xx == 0) {  // all on one column
+    p.cy = yz / yy;
   }
   return p;
 }
 
-// levels[k] has side 2^k + 1; levels.back() is the grid, relative to `ref`.
-std::vector<Lattice> build_hierarchy(const Grid& grid, const Plane& ref) {
+// Coarsest (2×2) first; levels.back() is the field, relative to `ref`.
+std::vector<Lattice> build_hierarchy(const FieldView& f, const Plane& ref) {
   Lattice finest;
-  finest.side = grid.side();
-  finest.z.assign(grid.cell_count(), 0.0);
-  finest.pinned.assign(grid.cell_count(), 0);
-  for (int y = 0; y < grid.side(); ++y)
-    for (int x = 0; x < grid.side(); ++x)
-      if (is_constraint(grid.state(x, y))) {
-        const std::size_t i = grid.index(x, y);
+  finest.w = f.w;
+  finest.h = f.h;
+  const std::size_t cells = static_cast<std::size_t>(f.w) * f.h;
+  finest.z.assign(cells, 0.0);
+  finest.pinned.assign(cells, 0);
+  for (int y = 0; y < f.h; ++y)
+    for (int x = 0; x < f.w; ++x)
+      if (is_constraint(f.state_at(x, y))) {
+        const std::size_t i = finest.index(x, y);
         finest.pinned[i] = 1;
-        finest.z[i] = grid.z(x, y) - ref.at(x, y);
+        finest.z[i] = f.z_at(x, y) - ref.at(x, y);
       }
-  finest.spans = free_spans(finest.pinned, finest.side);
+  finest.spans = free_spans(finest.pinned, finest.w, finest.h);
   std::vector<Lattice> levels;
   levels.push_back(std::move(finest));
-  while (levels.back().side > 2) levels.push_back(coarser_lattice(levels.back()));
+  while (levels.back().w > 2 || levels.back().h > 2) levels.push_back(coarser_lattice(levels.back()));
   std::reverse(levels.begin(), levels.end());
   return levels;
 }
@@ -127,7 +132,7 @@ void start_from_coarser(Lattice& lat, const Lattice& coarse, const PullLevel* es
   for (const Span& sp : lat.spans)
     for (int x = sp.x0; x < sp.x1; ++x) {
       const std::size_t i = lat.index(x, sp.y);
-      const double p = prolong_at(coarse.z.data(), coarse.side, x, sp.y);
+      const double p = prolong_at(coarse.z.data(), coarse.w, coarse.h, x, sp.y);
       const bool is_new = (x & 1) || (sp.y & 1);
       if (est && start == CascadeStart::blend && is_new) {
         const double w = est->weight[i];
@@ -146,14 +151,13 @@ void start_from_coarser(Lattice& lat, const Lattice& coarse, const PullLevel* es
 void attach_springs(Lattice& lat, const PullLevel& est, double strength) {
   lat.spring.assign(est.weight.size(), 0.0);
   lat.target = est.mean;
-  const int side = lat.side;
   for (const Span& sp : lat.spans)
     for (int x = sp.x0; x < sp.x1; ++x) {
       bool near_pinned = false;
       for (int dy = -1; dy <= 1 && !near_pinned; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const int nx = x + dx, ny = sp.y + dy;
-          if (nx >= 0 && ny >= 0 && nx < side && ny < side && lat.pinned[lat.index(nx, ny)]) {
+          if (nx >= 0 && ny >= 0 && nx < lat.w && ny < lat.h && lat.pinned[lat.index(nx, ny)]) {
             near_pinned = true;
             break;
           }
@@ -181,10 +185,10 @@ int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
 
 }  // namespace
 
-void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,
-                               const ProgressFn& progress) {
-  const Plane ref = constraint_plane(grid);
-  std::vector<Lattice> levels = build_hierarchy(grid, ref);
+void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule, const ProgressFn& progress) {
+  if (field.w < 1 || field.h < 1) return;
+  const Plane ref = constraint_plane(field);
+  std::vector<Lattice> levels = build_hierarchy(field, ref);
   const int finest = static_cast<int>(levels.size()) - 1;
   if (levels[finest].spans.empty()) return;
   for (int k = 0; k <= finest; ++k) levels[k].tension = schedule.tension * std::ldexp(1.0, 2 * (finest - k));
@@ -195,7 +199,8 @@ void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinP
 
   // 2. Top-down cascade.
   if (finest == 0) {  // a 2×2 grid: the mean of its constraints
-    const PullLevel flat{2, std::vector<double>(4, 0.0), std::vector<double>(4, 0.0)};
+    const PullLevel flat{levels[0].w, levels[0].h, std::vector<double>(levels[0].z.size(), 0.0),
+                       std::vector<double>(levels[0].z.size(), 0.0)};
     start_coarsest(levels[0], flat);
   } else {
     start_coarsest(levels[0], estimates[0]);
@@ -227,10 +232,17 @@ void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinP
 
   const Lattice& fill = levels[finest];
   for (const Span& sp : fill.spans)
-    for (int x = sp.x0; x < sp.x1; ++x) grid.z(x, sp.y) = fill.z[fill.index(x, sp.y)] + ref.at(x, sp.y);
+    for (int x = sp.x0; x < sp.x1; ++x) field.z_at(x, sp.y) = fill.z[fill.index(x, sp.y)] + ref.at(x, sp.y);
+  report(progress, 1.0);
+}
 
+void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,
+                               const ProgressFn& progress) {
+  const FieldView field{grid.side(), grid.side(), grid.elevations().data(), grid.states().data()};
+  const bool rough = params.rs_auto || params.rs > 0;
+  thin_plate_smooth(field, schedule, rough ? sub_progress(progress, 0.0, 0.9) : progress);
   // 4. Roughness on the smooth fill.
-  if (params.rs_auto || params.rs > 0) add_roughness(grid, params);
+  if (rough) add_roughness(grid, params);
   report(progress, 1.0);
 }
 

@@ -173,7 +173,7 @@ TEST(BiharmonicRelax, InteriorStencilIsTheEnergyGradient) {
   std::normal_distribution<double> n01;
   for (double& v : z) v = n01(rng);
   mcmd::Lattice lat;
-  lat.side = side;
+  lat.w = lat.h = side;
   lat.z = z;
   lat.pinned.assign(z.size(), 0);
   const int x = 4, y = 4;
@@ -181,7 +181,7 @@ TEST(BiharmonicRelax, InteriorStencilIsTheEnergyGradient) {
   const double stencil = 20 * at(0, 0) - 8 * (at(-1, 0) + at(1, 0) + at(0, -1) + at(0, 1)) +
                          2 * (at(-1, -1) + at(1, -1) + at(-1, 1) + at(1, 1)) +
                          (at(-2, 0) + at(2, 0) + at(0, -2) + at(0, 2));
-  const mcmd::ThinPlateRow row = mcmd::thin_plate_row(z.data(), side, x, y);
+  const mcmd::ThinPlateRow row = mcmd::thin_plate_row(z.data(), side, side, x, y);
   EXPECT_NEAR(row.az, stencil, 1e-12);
   EXPECT_DOUBLE_EQ(row.diag, 20.0);
   EXPECT_NEAR(mcmd::residual_at(lat, nullptr, x, y), -stencil, 1e-12);
@@ -193,7 +193,7 @@ TEST(BiharmonicRelax, PlanesAreInTheNullSpaceEvenAtTheBorder) {
   for (int y = 0; y < side; ++y)
     for (int x = 0; x < side; ++x) z[y * side + x] = 3.0 + 2.0 * x - 5.0 * y;
   for (int y = 0; y < side; ++y)
-    for (int x = 0; x < side; ++x) EXPECT_NEAR(mcmd::thin_plate_row(z.data(), side, x, y).az, 0.0, 1e-12);
+    for (int x = 0; x < side; ++x) EXPECT_NEAR(mcmd::thin_plate_row(z.data(), side, side, x, y).az, 0.0, 1e-12);
 }
 
 TEST(CubicProlong, ExactOnCubicsInsideAndQuadraticsAtTheBorder) {
@@ -208,9 +208,9 @@ TEST(CubicProlong, ExactOnCubicsInsideAndQuadraticsAtTheBorder) {
     }
   for (int y = 0; y < mf; ++y)
     for (int x = 0; x < mf; ++x) {
-      EXPECT_NEAR(mcmd::prolong_at(quad.data(), mc, x, y), fq(x, y), 1e-9);
+      EXPECT_NEAR(mcmd::prolong_at(quad.data(), mc, mc, x, y), fq(x, y), 1e-9);
       if (x >= 3 && y >= 3 && x <= mf - 4 && y <= mf - 4) {
-        EXPECT_NEAR(mcmd::prolong_at(cubic.data(), mc, x, y), fc(x, y), 1e-9);
+        EXPECT_NEAR(mcmd::prolong_at(cubic.data(), mc, mc, x, y), fc(x, y), 1e-9);
       }
     }
 }
@@ -219,7 +219,7 @@ TEST(CubicProlong, ExactOnCubicsInsideAndQuadraticsAtTheBorder) {
 mcmd::Lattice scattered_lattice(unsigned seed) {
   const int side = (1 << 7) + 1;
   mcmd::Lattice lat;
-  lat.side = side;
+  lat.w = lat.h = side;
   lat.z.assign(side * side, 0.0);
   lat.pinned.assign(side * side, 0);
   std::mt19937 rng(seed);
@@ -229,7 +229,7 @@ mcmd::Lattice scattered_lattice(unsigned seed) {
       lat.pinned[i] = 1;
       lat.z[i] = 100.0 * u(rng);
     }
-  lat.spans = mcmd::free_spans(lat.pinned, side);
+  lat.spans = mcmd::free_spans(lat.pinned, side, side);
   return lat;
 }
 
@@ -269,7 +269,7 @@ TEST(Multigrid, PreconditionedCgConvergesOnScatteredConstraints) {
 TEST(Multigrid, PreconditionedCgSolvesTheProblemWithSprings) {
   const int n = 6, side = (1 << n) + 1;
   mcmd::Lattice lat;
-  lat.side = side;
+  lat.w = lat.h = side;
   lat.z.assign(side * side, 0.0);
   lat.pinned.assign(side * side, 0);
   lat.spring.assign(side * side, 0.0);
@@ -288,7 +288,7 @@ TEST(Multigrid, PreconditionedCgSolvesTheProblemWithSprings) {
         lat.target[i] = 30.0 * std::cos(0.05 * (x + y));
       }
     }
-  lat.spans = mcmd::free_spans(lat.pinned, side);
+  lat.spans = mcmd::free_spans(lat.pinned, side, side);
   mcmd::Multigrid mg(lat, {});
   const int it = mg.solve_pcg(lat, 1e-10, 200);
   EXPECT_LT(it, 200);

@@ -26,7 +26,8 @@ struct ThinPlateRow {
 // With tension t > 0 the membrane term t·Σ_edges (z_i - z_j)² joins E: in the
 // interior (A z)_p gains t·(4 z_p - Σ 4 neighbours), at the border only the
 // edges inside the lattice count.
-ThinPlateRow thin_plate_row(const double* z, int side, int x, int y, double tension = 0.0);
+// z is a w×h row-major lattice.
+ThinPlateRow thin_plate_row(const double* z, int w, int h, int x, int y, double tension = 0.0);
 
 // `sweeps` lexicographic SOR sweeps of A z = rhs over the free cells (rhs may
 // be null for 0), factor `omega` (1 = Gauss-Seidel). Pinned cells never change.

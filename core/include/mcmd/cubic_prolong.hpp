@@ -1,4 +1,5 @@
-// Coarse-to-fine interpolation between two nested lattices (side mc -> 2mc-1):
+// Coarse-to-fine interpolation between two nested lattices (mc cells along an
+// axis -> up to 2mc-1):
 // cells shared with the coarse lattice are copied, new cells come from the
 // 4-point interpolatory cubic (-1/16, 9/16, 9/16, -1/16) along rows and
 // columns (tensor product for square centres). Where the 4th point would fall
@@ -6,7 +7,6 @@
 // mean on a 2-cell coarse side. Exact on cubics (quadratics at the border).
 #pragma once
 
-#include <array>
 #include <cstddef>
 
 namespace mcmd {
@@ -19,17 +19,8 @@ struct Weights1D {
 };
 Weights1D cubic_weights_1d(int x, int mc);
 
-struct ProlongWeights {
-  std::array<std::size_t, 16> index{};  // coarse cells
-  std::array<double, 16> weight{};
-  int count = 0;
-};
-
-// The coarse cells and weights that make fine cell (x, y). Pre: mc >= 2,
-// 0 <= x, y < 2mc-1.
-ProlongWeights prolong_weights(int x, int y, int mc);
-
-// Σ weight · coarse[index] for fine cell (x, y).
-double prolong_at(const double* coarse, int mc, int x, int y);
+// The interpolated value at fine cell (x, y) from a coarse lattice of mw×mh
+// cells (row-major). Pre: mw, mh >= 2, 0 <= x <= 2mw-2, 0 <= y <= 2mh-2.
+double prolong_at(const double* coarse, int mw, int mh, int x, int y);
 
 }  // namespace mcmd

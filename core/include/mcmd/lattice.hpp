@@ -1,5 +1,8 @@
-// One level of the nested 2^l+1 hierarchy as a compact square array, with the
-// cells pinned at that lattice position and the runs of free cells to update.
+// One level of the nested hierarchy as a compact w×h array (row-major), with
+// the cells pinned at that lattice position and the runs of free cells to
+// update. Level sizes follow w_coarse = floor(w / 2) + 1: a 2^l+1 side halves
+// exactly, any other size gets one ghost column (row) past its end, so a
+// raster of any size has its own hierarchy without padding.
 #pragma once
 
 #include <cstddef>
@@ -16,7 +19,8 @@ struct Span {
 };
 
 struct Lattice {
-  int side = 0;                     // 2^l + 1
+  int w = 0;                        // columns
+  int h = 0;                        // rows
   std::vector<double> z;            // values (relative to the fill's reference elevation)
   std::vector<std::uint8_t> pinned; // 1: a true constraint at this lattice position
   std::vector<Span> spans;          // free cells in raster order
@@ -30,13 +34,17 @@ struct Lattice {
   double tension = 0.0;
 
   std::size_t index(int x, int y) const {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(side) + static_cast<std::size_t>(x);
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
   }
   std::size_t free_count() const;
 };
 
-// Runs of cells with pinned == 0, row by row. Pre: pinned.size() == side².
-std::vector<Span> free_spans(const std::vector<std::uint8_t>& pinned, int side);
+// Runs of cells with pinned == 0, row by row. Pre: pinned.size() == w·h.
+std::vector<Span> free_spans(const std::vector<std::uint8_t>& pinned, int w, int h);
+
+// The size of the next coarser level along one axis: fine cell 2i is coarse
+// cell i, and the coarse level reaches past the fine one's last cell.
+inline int coarser_extent(int fine) { return fine / 2 + 1; }
 
 // Which coarse cells are pinned.
 enum class CoarsePin {
@@ -45,10 +53,11 @@ enum class CoarsePin {
                  // problem at least as stiff as the fine one (multigrid corrections)
 };
 
-// The next coarser lattice (side (s+1)/2): cell (i, j) is fine cell (2i, 2j),
-// pinned by `rule`; z copied from (2i, 2j) at pinned cells, 0 elsewhere;
-// tension 4× the fine one's.
-// Pre: fine.side >= 3 and odd.
+// The next coarser lattice (coarser_extent of each side): cell (i, j) is fine
+// cell (2i, 2j), pinned by `rule`; z copied from (2i, 2j) at pinned cells, 0
+// elsewhere (a ghost cell past the fine lattice is pinned when its fine
+// neighbourhood is, else free); tension 4× the fine one's.
+// Pre: fine.w, fine.h >= 2 and one of them >= 3.
 Lattice coarser_lattice(const Lattice& fine, CoarsePin rule = CoarsePin::position);
 
 }  // namespace mcmd

@@ -46,7 +46,7 @@ class Multigrid {
   void cycle(Lattice& fine, const double* rhs, int k);
 
   VCycleSchedule schedule_;
-  std::vector<Lattice> coarse_;                // coarse_[k]: side 2^k + 1, z = correction
+  std::vector<Lattice> coarse_;                // coarse to fine, z = correction
   std::vector<std::vector<double>> rhs_;       // right-hand side of coarse_[k]
 };
 

@@ -12,16 +12,17 @@
 namespace mcmd {
 
 struct PullLevel {
-  int side = 0;
+  int w = 0;
+  int h = 0;
   std::vector<double> mean;    // weighted mean of the constraints (0 where weight is 0)
   std::vector<double> weight;  // constraint density in [0, 1] (0: no estimate)
 };
 
-// Levels from the coarsest (side 2) up to the one just below `finest` (whose
+// Levels from the coarsest (2×2) up to the one just below `finest` (whose
 // own estimate is its pinned cells: weight 1 and mean z there, 0 elsewhere);
-// result[k] has side 2^k + 1. Coarse cell (i, j) gathers fine cells (2i+dx, 2j+dy), |dx|, |dy| <= 1, with
+// sizes as coarser_lattice's (lattice.hpp). Coarse cell (i, j) gathers fine cells (2i+dx, 2j+dy), |dx|, |dy| <= 1, with
 // weights (1, ½, ¼) for (centre, edge, corner), the transpose of bilinear
-// interpolation, normalised by the kernel weight inside the grid. Pre: finest.side = 2^n + 1.
+// interpolation, normalised by the kernel weight inside the grid.
 std::vector<PullLevel> pull(const Lattice& finest);
 
 }  // namespace mcmd

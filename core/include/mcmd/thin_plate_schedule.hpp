@@ -2,6 +2,8 @@
 // defaults are the measured choice (docs/default-method.md).
 #pragma once
 
+#include <cstddef>
+
 #include "mcmd/fill.hpp"
 #include "mcmd/multigrid.hpp"
 
@@ -31,6 +33,24 @@ struct ThinPlateSchedule {
   double pull_length = 8.0;
   VCycleSchedule vcycle{};
 };
+
+// A w×h row-major field filled in place by the smooth thin-plate method: cells
+// whose state is a constraint (known, ridge, river) are kept, unknown cells
+// get the fill. Any size (no 2^n+1 padding: lattice.hpp).
+struct FieldView {
+  int w = 0;
+  int h = 0;
+  double* z = nullptr;
+  const CellState* state = nullptr;
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
+  double& z_at(int x, int y) const { return z[index(x, y)]; }
+  CellState state_at(int x, int y) const { return state[index(x, y)]; }
+};
+
+// The smooth fill of `field` (stages 1-3 of thin_plate.cpp, no roughness).
+// Pre: field.z and field.state hold w·h cells. Post: constraint cells
+// unchanged; unknown cells filled when the field has a constraint.
+void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule, const ProgressFn& progress = {});
 
 // thin_plate_fill with an explicit schedule; noise (rs, rs_auto) included.
 void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,
