@@ -79,22 +79,26 @@ double plane_at_lattice(double n, double z, double x, double y, double xx, doubl
 // A pure thin plate extends the slopes at a void's edge linearly: fine across
 // a blob, but across a void thousands of cells wide (half an SRTM tile) it
 // builds mountains and trenches out of a coastline. When some void cell lies
-// far from any data, the guide becomes a thin plate under tension, whose
+// far from any data, the fill becomes a thin plate under tension, whose
 // membrane term lets slopes level off over kSlopeReach cells instead. The
-// tension ramps in with the void's reach so that ordinary voids, whose shape
-// the guide also sets on small rasters, keep the plain thin plate.
+// tension ramps in with the void's reach so that ordinary voids keep the
+// plain thin plate.
 constexpr double kSlopeReach = 64.0;        // raster cells
 constexpr double kTensionFrom = 128.0;      // farthest void cell from data: no tension below
 constexpr double kTensionFull = 512.0;      // full tension above
+
+double far_void_tension(double farthest, int stride) {
+  const double ramp = std::clamp((farthest - kTensionFrom) / (kTensionFull - kTensionFrom), 0.0, 1.0);
+  const double reach = kSlopeReach / stride;  // in lattice cells
+  return ramp * ramp * (3.0 - 2.0 * ramp) / (reach * reach);
+}
 
 void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, const ProgressFn& progress) const {
   if (params.method != Method::mcmd) return fill(g, params, progress);
   double farthest = 0.0;
   for (double d : distance_to_valid(known_.data(), cw_, ch_)) farthest = std::max(farthest, d * stride_);
-  const double ramp = std::clamp((farthest - kTensionFrom) / (kTensionFull - kTensionFrom), 0.0, 1.0);
   ThinPlateSchedule schedule;
-  const double reach = kSlopeReach / stride_;  // in lattice cells
-  schedule.tension = ramp * ramp * (3.0 - 2.0 * ramp) / (reach * reach);
+  schedule.tension = far_void_tension(farthest, stride_);
   thin_plate_fill_scheduled(g, params, schedule, progress);
 }
 

@@ -24,7 +24,7 @@ double guide_radius(const TileLayout& layout, const CoarseGuide& guide) {
   // the halo so every window that outputs a cell sees the same known cells
   // within that radius.
   const double limit = layout.x.step() / 2 - layout.x.band() - 2;
-  return std::max(1.0, std::min(8.0 * guide.stride(), limit));
+  return std::max(1.0, std::min(kGuideRadiusStrides * guide.stride(), limit));
 }
 
 int exact_distance_limit(const TileLayout& layout) {

@@ -22,6 +22,7 @@
 #include "mcmd/coarse_guide.hpp"
 #include "mcmd/tile_layout.hpp"
 #include "mcmd/tile_window.hpp"
+#include "single_field.hpp"
 #include "small_void.hpp"
 #include "tile_scan.hpp"
 #include "worker_pool.hpp"
@@ -113,6 +114,9 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
 void tiled_fill(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
                 const ProgressFn& progress, const TiledFillHooks& hooks) {
   check_inputs(raster, tiling);
+  if (detail::single_field_applies(raster.width, raster.height, params, tiling) &&
+      detail::fill_single_field(raster, params, tiling, sub_progress(progress, 0.0, 1.0), hooks.stats))
+    return;
   const TileLayout layout(raster.width, raster.height,
                           effective_tile_side(raster.width, raster.height, tiling.tile_side));
   const bool single = layout.tile_count() == 1;

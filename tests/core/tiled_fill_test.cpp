@@ -17,6 +17,7 @@
 #include "mcmd/padding.hpp"
 #include "mcmd/tile_layout.hpp"
 #include "mcmd/tile_window.hpp"
+#include "mcmd/thin_plate_schedule.hpp"
 #include "mcmd/tiled_fill.hpp"
 #include "test_terrain.hpp"
 
@@ -531,4 +532,69 @@ TEST(TiledFill, SmallAndLargeVoidsTogetherAreDeterministic) {
     }
   ASSERT_GT(n, 100u);
   EXPECT_LT(std::sqrt(se / n), 1.0);
+}
+
+// One field (docs/tiling.md, "One field"): a raster of at most 2^21 cells,
+// default tile size, is filled as one field — no tiles, the field's thin
+// plate exactly, every void written once.
+TEST(TiledFill, SmallRasterIsOneFieldWithTheFieldsThinPlate) {
+  MemRaster r(300, 170);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  punch_disc(r, 150, 80, 30);
+  punch_disc(r, 2, 160, 12);  // at a corner
+  TiledFillStats stats;
+  TiledFillHooks hooks;
+  hooks.stats = &stats;
+  const std::vector<double> out = run(r, 0, 2, hooks);
+  EXPECT_EQ(stats.tile_side, 0);
+  EXPECT_EQ(stats.windows_solved, 0u);
+  EXPECT_EQ(stats.cells_written, r.voids());
+  for (std::size_t i = 0; i < r.write_count.size(); ++i) ASSERT_EQ(r.write_count[i], r.valid[i] ? 0 : 1);
+
+  std::vector<double> z = r.z;
+  std::vector<CellState> state(z.size());
+  for (std::size_t i = 0; i < z.size(); ++i) state[i] = r.valid[i] ? CellState::known : CellState::unknown;
+  thin_plate_smooth(FieldView{r.w, r.h, z.data(), state.data()}, ThinPlateSchedule{});
+  EXPECT_TRUE(bit_identical(out, z));
+  EXPECT_TRUE(bit_identical(run(r, 0, 1), out));
+}
+
+TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
+  MemRaster r(200, 120);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  punch_disc(r, 100, 60, 20);
+  TilingParams tp;
+  tp.max_distance = 5.0;
+  tiled_fill(r.access(), FillParams{}, tp);
+  const std::vector<double> dist = distance_to_valid(r.valid.data(), r.w, r.h);
+  for (std::size_t i = 0; i < dist.size(); ++i) {
+    if (r.valid[i]) continue;
+    EXPECT_EQ(std::isfinite(r.out[i]), dist[i] <= 5.0) << i;
+  }
+}
+
+// Tiles are still used when asked for (-tile), for rough fills, for rasters
+// beyond the size limit, and for voids reaching far from data (the guide's
+// tension and deep-void surface; see HugeVoidDoesNotExtrapolate...).
+TEST(TiledFill, TilesWhenAskedForRoughOrFarReachingVoids) {
+  MemRaster r(300, 300);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  punch_disc(r, 150, 150, 20);
+  TiledFillStats stats;
+  TiledFillHooks hooks;
+  hooks.stats = &stats;
+  run(r, 65, 2, hooks);
+  EXPECT_EQ(stats.tile_side, 65);
+  TilingParams tp;
+  FillParams rough;
+  rough.rs_auto = true;
+  tiled_fill(r.access(), rough, tp, {}, hooks);
+  EXPECT_GT(stats.tile_side, 0);
+  punch_disc(r, 150, 150, 140);  // a void cell 140 cells from data
+  run(r, 0, 2, hooks);
+  EXPECT_GT(stats.tile_side, 0);
+  EXPECT_TRUE(r.complete());
 }

@@ -24,6 +24,16 @@ namespace mcmd {
 // Smallest power of two S with ceil((max(w, h) - 1) / S) + 1 <= max_side.
 int guide_stride(int width, int height, int max_side = 1025);
 
+// Unknown cells farther than this many strides from data are pinned to the
+// guide (measured: 4 and 16 were worse on blob voids; docs/tiling.md).
+constexpr double kGuideRadiusStrides = 8.0;
+
+// The default method's tension (ThinPlateSchedule::tension, in the units of a
+// lattice of `stride` raster cells) when the void cell farthest from data lies
+// `farthest` raster cells away: 0 up to 128 cells, ramping to full beyond 512
+// (slopes level off over about 64 cells; docs/tiling.md, the coarse guide).
+double far_void_tension(double farthest, int stride);
+
 class CoarseGuide {
  public:
   CoarseGuide() = default;
