@@ -138,9 +138,32 @@ double residual_at(const Lattice& lat, const double* rhs, int x, int y) {
   return (rhs ? rhs[i] : 0.0) - az;
 }
 
+void residual_run(const Lattice& lat, const double* rhs, const Span& sp, double* out) {
+  const bool inner_row = sp.y >= 2 && sp.y <= lat.h - 3;
+  const int a = inner_row ? std::max(sp.x0, 2) : sp.x1, b = inner_row ? std::min(sp.x1, lat.w - 2) : sp.x1;
+  for (int x = sp.x0; x < std::min(a, sp.x1); ++x) out[x - sp.x0] = residual_at(lat, rhs, x, sp.y);
+  if (b > a) {
+    // Interior cells: the 13-point stencil with no branch, so the loop vectorises.
+    const std::size_t i0 = lat.index(a, sp.y);
+    const double* z = lat.z.data();
+    const std::ptrdiff_t s = lat.w;
+    const double t = lat.tension;
+    double* o = out + (a - sp.x0);
+    const int n = b - a;
+    for (int k = 0; k < n; ++k) o[k] = -interior_az(z, s, i0 + k, t);
+    if (rhs)
+      for (int k = 0; k < n; ++k) o[k] += rhs[i0 + k];
+    if (!lat.spring.empty()) {
+      const double* sp_ = lat.spring.data() + i0;
+      const double* tg = lat.target.data() + i0;
+      for (int k = 0; k < n; ++k) o[k] -= sp_[k] * (z[i0 + k] - tg[k]);
+    }
+  }
+  for (int x = std::max(b, a); x < sp.x1; ++x) out[x - sp.x0] = residual_at(lat, rhs, x, sp.y);
+}
+
 void residual(const Lattice& lat, const double* rhs, std::vector<double>& r) {
-  for (const Span& sp : lat.spans)
-    for (int x = sp.x0; x < sp.x1; ++x) r[lat.index(x, sp.y)] = residual_at(lat, rhs, x, sp.y);
+  for (const Span& sp : lat.spans) residual_run(lat, rhs, sp, r.data() + lat.index(sp.x0, sp.y));
 }
 
 }  // namespace mcmd

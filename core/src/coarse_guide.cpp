@@ -93,12 +93,16 @@ double far_void_tension(double farthest, int stride) {
   return ramp * ramp * (3.0 - 2.0 * ramp) / (reach * reach);
 }
 
-void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, const ProgressFn& progress) const {
-  if (params.method != Method::mcmd) return fill(g, params, progress);
+double CoarseGuide::lattice_tension() const {
   double farthest = 0.0;
   for (double d : distance_to_valid(known_.data(), cw_, ch_)) farthest = std::max(farthest, d * stride_);
+  return far_void_tension(farthest, stride_);
+}
+
+void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, const ProgressFn& progress) const {
+  if (params.method != Method::mcmd) return fill(g, params, progress);
   ThinPlateSchedule schedule;
-  schedule.tension = far_void_tension(farthest, stride_);
+  schedule.tension = lattice_tension();
   thin_plate_fill_scheduled(g, params, schedule, progress);
 }
 
@@ -117,7 +121,17 @@ bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
   known_ = known;
   if (known_count == 0) return false;
   value_ = mean;
-  if (known_count < value_.size()) {
+  const bool smooth_default = params.method == Method::mcmd && !params.rs_auto && params.rs == 0;
+  if (known_count < value_.size() && smooth_default && lattice_tension() == 0) {
+    // The lattice as it is, no 2^m+1 padding (a 676×301 lattice padded to
+    // 1025² was 5× the work). Not under tension: across a void reaching the
+    // raster's edge, the mirror (a level surface there) is what stops a
+    // coast's slope, which a free edge under tension did not (2.2 km too high
+    // in HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains).
+    std::vector<CellState> state(value_.size());
+    for (std::size_t i = 0; i < state.size(); ++i) state[i] = known[i] ? CellState::known : CellState::unknown;
+    thin_plate_smooth(FieldView{cw_, ch_, value_.data(), state.data()}, ThinPlateSchedule{}, progress);
+  } else if (known_count < value_.size()) {
     Grid g = mirror_padded_grid(mean.data(), known.data(), cw_, ch_, levels_to_cover(cw_, ch_));
     fill_lattice(g, params, progress);
     for (int j = 0; j < ch_; ++j)

@@ -26,12 +26,18 @@ void restrict_residual(const Lattice& fine, const double* rhs, double scale, con
     std::fill(row.begin(), row.end(), 0.0);
   };
   std::fill(row.begin(), row.end(), 0.0);
+  std::vector<double> res(static_cast<std::size_t>(fine.w));
   int current = -1;
   for (const Span& sp : fine.spans) {
     if (sp.y != current && current >= 0) flush(current);
     current = sp.y;
+    residual_run(fine, rhs, sp, res.data());
     for (int x = sp.x0; x < sp.x1; ++x) {
-      const double v = scale * residual_at(fine, rhs, x, sp.y);
+      const double v = scale * res[x - sp.x0];
+      if ((x & 1) == 0) {  // a coarse cell's own position: weight 1
+        row[x / 2] += v;
+        continue;
+      }
       const Weights1D w = cubic_weights_1d(x, mw);
       for (int i = 0; i < w.count; ++i) row[w.first + i] += w.w[i] * v;
     }
@@ -55,11 +61,16 @@ void add_correction(Lattice& fine, const Lattice& coarse, std::vector<double>& r
         for (int c = 0; c < mw; ++c) row[c] += w.w[j] * e[c];
       }
     }
+    double* z = fine.z.data() + fine.index(0, sp.y);
     for (int x = sp.x0; x < sp.x1; ++x) {
+      if ((x & 1) == 0) {
+        z[x] += row[x / 2];
+        continue;
+      }
       const Weights1D w = cubic_weights_1d(x, mw);
       double v = 0.0;
       for (int i = 0; i < w.count; ++i) v += w.w[i] * row[w.first + i];
-      fine.z[fine.index(x, sp.y)] += v;
+      z[x] += v;
     }
   }
 }
@@ -159,8 +170,11 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations) {
   };
   const auto apply = [&](const std::vector<double>& v, std::vector<double>& out) {  // out = A v
     copy_free(v, work.z);
-    for (const Span& sp : work.spans)
-      for (int x = sp.x0; x < sp.x1; ++x) out[work.index(x, sp.y)] = -residual_at(work, nullptr, x, sp.y);
+    for (const Span& sp : work.spans) {
+      double* o = out.data() + work.index(sp.x0, sp.y);
+      residual_run(work, nullptr, sp, o);
+      for (int t = 0; t < sp.x1 - sp.x0; ++t) o[t] = -o[t];
+    }
   };
   precondition(r, zv);
   copy_free(zv, p);

@@ -37,6 +37,9 @@ void relax(Lattice& lat, const double* rhs, int sweeps, double omega = 1.0);
 // data term: (A z)_p += spring_p (z_p - target_p).
 double residual_at(const Lattice& lat, const double* rhs, int x, int y);
 
+// rhs - A z at the cells of one run of free cells, into out[0 .. x1 - x0).
+void residual_run(const Lattice& lat, const double* rhs, const Span& sp, double* out);
+
 // r = rhs - A z at the free cells; entries of pinned cells are left as they
 // are (keep them 0). Pre: r.size() == z.size().
 void residual(const Lattice& lat, const double* rhs, std::vector<double>& r);

@@ -8,8 +8,9 @@
 // cell gives its value): unlike a plain mean it is not biased towards the
 // known side of a block that a void cuts. The lattice has
 // ceil((W - 1) / S) + 1 points per row (at most max_side), the last one on or
-// past the raster's last cell; it is mirror-padded to a
-// 2^m+1 grid and filled once with mcmd::fill; windows then read it through an
+// past the raster's last cell; it is filled once as it is (the smooth default
+// method: a w×h field) or mirror-padded to a 2^m+1 grid for mcmd::fill (other
+// methods, rough fills); windows then read it through an
 // interpolating bicubic (Catmull-Rom) at full resolution.
 #pragma once
 
@@ -68,6 +69,8 @@ class CoarseGuide {
  private:
   // Fill the lattice's unknown points (thin plate under tension for the default method).
   void fill_lattice(Grid& g, const FillParams& params, const ProgressFn& progress) const;
+  // far_void_tension for this lattice's known points.
+  double lattice_tension() const;
   int width_ = 1, height_ = 1, stride_ = 1, cw_ = 1, ch_ = 1;
   struct Moments {  // of the known cells of a block, offsets from the lattice point
     double n = 0, z = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0, zx = 0, zy = 0;
