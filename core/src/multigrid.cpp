@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "mcmd/biharmonic_relax.hpp"
 #include "mcmd/cubic_prolong.hpp"
@@ -10,27 +11,46 @@ namespace mcmd {
 
 namespace {
 
+// Zero `v` over the free cells of `lat`.
+void zero_free(const Lattice& lat, std::vector<double>& v) {
+  for (const Span& sp : lat.spans)
+    std::fill(v.begin() + static_cast<std::ptrdiff_t>(lat.index(sp.x0, sp.y)),
+              v.begin() + static_cast<std::ptrdiff_t>(lat.index(sp.x1, sp.y)), 0.0);
+}
+
+// Coarse columns [first, last] that fine columns [x0, x1) interpolate from or restrict to.
+std::pair<int, int> coarse_columns(int x0, int x1, int mw) {
+  return {std::max(0, x0 / 2 - 1), std::min(mw - 1, x1 / 2 + 1)};
+}
+
 // b = scale · Pᵀ (rhs - A z) over the free cells of `fine`, separably: the
 // residual of one fine row is restricted along x into `row`, which is then
-// spread along y into b. Zero at pinned coarse cells.
+// spread along y into b. Only b's free cells are set (pinned ones are never
+// read), and only columns near free cells are touched: the cost follows the
+// free cells, not the lattice.
 void restrict_residual(const Lattice& fine, const double* rhs, double scale, const Lattice& coarse,
                        std::vector<double>& row, std::vector<double>& b) {
   const int mw = coarse.w, mh = coarse.h;
-  std::fill(b.begin(), b.end(), 0.0);
+  zero_free(coarse, b);
+  int lo = mw, hi = -1;  // columns of `row` in use
   const auto flush = [&](int y) {
     const Weights1D w = cubic_weights_1d(y, mh);
     for (int j = 0; j < w.count; ++j) {
       double* brow = b.data() + static_cast<std::ptrdiff_t>(w.first + j) * mw;
-      for (int c = 0; c < mw; ++c) brow[c] += w.w[j] * row[c];
+      for (int c = lo; c <= hi; ++c) brow[c] += w.w[j] * row[c];
     }
-    std::fill(row.begin(), row.end(), 0.0);
+    if (hi >= lo) std::fill(row.begin() + lo, row.begin() + hi + 1, 0.0);
+    lo = mw;
+    hi = -1;
   };
-  std::fill(row.begin(), row.end(), 0.0);
   std::vector<double> res(static_cast<std::size_t>(fine.w));
   int current = -1;
   for (const Span& sp : fine.spans) {
     if (sp.y != current && current >= 0) flush(current);
     current = sp.y;
+    const auto [c0, c1] = coarse_columns(sp.x0, sp.x1, mw);
+    lo = std::min(lo, c0);
+    hi = std::max(hi, c1);
     residual_run(fine, rhs, sp, res.data());
     for (int x = sp.x0; x < sp.x1; ++x) {
       const double v = scale * res[x - sp.x0];
@@ -43,23 +63,19 @@ void restrict_residual(const Lattice& fine, const double* rhs, double scale, con
     }
   }
   if (current >= 0) flush(current);
-  for (std::size_t i = 0; i < b.size(); ++i)
-    if (coarse.pinned[i]) b[i] = 0.0;
 }
 
-// fine.z += P e at the free cells, separably (along y into one row, then x).
+// fine.z += P e at the free cells, separably (along y into one row, then x),
+// each run interpolating only the coarse columns it needs.
 void add_correction(Lattice& fine, const Lattice& coarse, std::vector<double>& row) {
   const int mw = coarse.w, mh = coarse.h;
-  int current = -1;
   for (const Span& sp : fine.spans) {
-    if (sp.y != current) {
-      current = sp.y;
-      const Weights1D w = cubic_weights_1d(sp.y, mh);
-      std::fill(row.begin(), row.end(), 0.0);
-      for (int j = 0; j < w.count; ++j) {
-        const double* e = coarse.z.data() + static_cast<std::ptrdiff_t>(w.first + j) * mw;
-        for (int c = 0; c < mw; ++c) row[c] += w.w[j] * e[c];
-      }
+    const Weights1D wy = cubic_weights_1d(sp.y, mh);
+    const auto [c0, c1] = coarse_columns(sp.x0, sp.x1, mw);
+    std::fill(row.begin() + c0, row.begin() + c1 + 1, 0.0);
+    for (int j = 0; j < wy.count; ++j) {
+      const double* e = coarse.z.data() + static_cast<std::ptrdiff_t>(wy.first + j) * mw;
+      for (int c = c0; c <= c1; ++c) row[c] += wy.w[j] * e[c];
     }
     double* z = fine.z.data() + fine.index(0, sp.y);
     for (int x = sp.x0; x < sp.x1; ++x) {
@@ -86,6 +102,8 @@ Multigrid::Multigrid(const Lattice& finest, VCycleSchedule schedule) : schedule_
   }
   // chain was built fine to coarse; index it coarse to fine.
   coarse_.assign(std::make_move_iterator(chain.rbegin()), std::make_move_iterator(chain.rend()));
+  // Corrections are 0 at pinned cells; cycles then only ever clear free ones.
+  for (Lattice& c : coarse_) std::fill(c.z.begin(), c.z.end(), 0.0);
   rhs_.resize(coarse_.size());
   for (std::size_t k = 0; k < coarse_.size(); ++k) rhs_[k].assign(coarse_[k].z.size(), 0.0);
 }
@@ -109,7 +127,7 @@ void Multigrid::cycle(Lattice& fine, const double* rhs, int k) {
   std::vector<double> row(coarse.w);
   restrict_residual(fine, rhs, 4.0, coarse, row, rhs_[k]);
 
-  std::fill(coarse.z.begin(), coarse.z.end(), 0.0);
+  zero_free(coarse, coarse.z);
   cycle(coarse, rhs_[k].data(), k - 1);
 
   add_correction(fine, coarse, row);

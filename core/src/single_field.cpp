@@ -1,12 +1,16 @@
 #include "single_field.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "mcmd/coarse_guide.hpp"
 #include "mcmd/distance.hpp"
 #include "mcmd/thin_plate_schedule.hpp"
+#include "void_components.hpp"
 
 namespace mcmd::detail {
 
@@ -16,40 +20,169 @@ bool single_field_applies(int width, int height, const FillParams& params, const
   return smooth_default && tiling.tile_side == 0 && cells <= kSingleFieldMaxCells;
 }
 
+int domain_margin(int extent) { return kDomainMargin + extent / kDomainMarginDivisor; }
+
 namespace {
 
-// Deep inside large voids the surface is a coarse guide's, as in tiles
-// (docs/tiling.md): unknown cells farther than the guide radius from data are
-// pinned to it. With the guide stride of tiles (1 up to 1025 cells a side:
-// no guide) one field and tiles agree on what a deep void is.
-void pin_deep_cells(int w, int h, const std::vector<double>& dist, double farthest, const std::vector<std::uint8_t>& valid,
-                    const FillParams& params, std::vector<double>& z, std::vector<CellState>& state) {
-  const int stride = guide_stride(w, h);
-  const double radius = kGuideRadiusStrides * stride;
-  if (stride == 1 || farthest <= radius) return;
-  CoarseGuide guide(w, h, stride);
-  guide.add_rows(0, h, z.data(), valid.data());
-  guide.solve(params);
-  for (std::size_t i = 0; i < dist.size(); ++i)
-    if (dist[i] > radius) {
-      z[i] = guide.at(static_cast<long long>(i % w), static_cast<long long>(i / w));
+// The raster in memory, as read.
+struct Whole {
+  int w = 0, h = 0;
+  std::vector<double> z;
+  std::vector<std::uint8_t> valid;
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * w + x; }
+};
+
+// A void component and the part of the raster it is solved in.
+struct Domain {
+  Box box;                    // the component's bounding box
+  Box rect;                   // grown by the margin, inside the raster
+  std::vector<VoidRun> runs;  // the component's cells
+};
+
+struct DomainResult {
+  double farthest = 0.0;            // from data, over the domain's void cells
+  std::vector<double> values;       // the component's cells, run after run
+  std::vector<std::uint8_t> write;  // and whether each is within max distance
+};
+
+std::vector<Domain> find_domains(const Whole& r) {
+  ComponentFinder finder(r.w, std::max(r.w, r.h), std::size_t{1} << 40);
+  for (int y = 0; y < r.h; ++y) finder.add_row(y, r.valid.data() + r.index(0, y));
+  finder.finish();
+  std::vector<Domain> out;
+  for (SmallComponent& c : finder.small()) {
+    const int m = domain_margin(std::max(c.box.width(), c.box.height()));
+    const Box rect{std::max(0, c.box.x0 - m), std::max(0, c.box.y0 - m), std::min(r.w - 1, c.box.x1 + m),
+                   std::min(r.h - 1, c.box.y1 + m)};
+    out.push_back(Domain{c.box, rect, std::move(c.runs)});
+  }
+  return out;
+}
+
+// The coarse guide, when some component may hold a cell farther than the guide
+// radius from data. Its stride is the tiles' one, at least kMinGuideStride.
+struct DeepGuide {
+  double radius = 0.0;
+  CoarseGuide guide;
+  bool ready() const { return guide.ready(); }
+};
+
+void prepare_guide(const Whole& r, const std::vector<Domain>& domains, const FillParams& params, DeepGuide& dg) {
+  const int stride = std::max(kMinGuideStride, guide_stride(r.w, r.h));
+  dg.radius = kGuideRadiusStrides * stride;
+  // A cell farther than the radius from data lies inside a run of more than
+  // twice the radius.
+  const bool deep = std::any_of(domains.begin(), domains.end(), [&](const Domain& d) {
+    return std::any_of(d.runs.begin(), d.runs.end(), [&](const VoidRun& run) { return run.x1 - run.x0 > 2 * dg.radius; });
+  });
+  if (!deep) return;
+  dg.guide = CoarseGuide(r.w, r.h, stride);
+  dg.guide.add_rows(0, r.h, r.z.data(), r.valid.data());
+  dg.guide.solve(params);
+}
+
+// Solve one domain as a field. Deep inside large voids the surface is the
+// coarse guide's, as in tiles (docs/tiling.md): without it, the fill of a
+// large void depended on how much terrain its field held (the cascade's
+// coarse levels), with it on the void's own surroundings.
+DomainResult solve_domain(const Whole& r, const Domain& d, const DeepGuide& dg, double max_distance,
+                          const ProgressFn& progress) {
+  const int w = d.rect.width(), h = d.rect.height();
+  const std::size_t cells = static_cast<std::size_t>(w) * h;
+  std::vector<double> z(cells);
+  std::vector<std::uint8_t> valid(cells);
+  for (int y = 0; y < h; ++y) {
+    const std::size_t from = r.index(d.rect.x0, d.rect.y0 + y), to = static_cast<std::size_t>(y) * w;
+    std::copy_n(r.z.begin() + from, w, z.begin() + to);
+    std::copy_n(r.valid.begin() + from, w, valid.begin() + to);
+  }
+  // Exact: a void cell's nearest known cell is next to its component.
+  const std::vector<double> dist = distance_to_valid(valid.data(), w, h);
+  DomainResult out;
+  for (const VoidRun& run : d.runs)
+    for (int x = run.x0; x < run.x1; ++x)
+      out.farthest = std::max(out.farthest, dist[static_cast<std::size_t>(run.y - d.rect.y0) * w + (x - d.rect.x0)]);
+  if (far_void_tension(out.farthest, 1) > 0) return out;  // the caller leaves the raster to tiles
+
+  std::vector<CellState> state(cells);
+  for (std::size_t i = 0; i < cells; ++i) {
+    state[i] = valid[i] ? CellState::known : CellState::unknown;
+    if (dg.ready() && dist[i] > dg.radius) {
+      z[i] = dg.guide.at(d.rect.x0 + static_cast<long long>(i % w), d.rect.y0 + static_cast<long long>(i / w));
       state[i] = CellState::known;
     }
+  }
+  thin_plate_smooth(FieldView{w, h, z.data(), state.data()}, ThinPlateSchedule{}, progress);
+  for (const VoidRun& run : d.runs)
+    for (int x = run.x0; x < run.x1; ++x) {
+      const std::size_t i = static_cast<std::size_t>(run.y - d.rect.y0) * w + (x - d.rect.x0);
+      out.values.push_back(z[i]);
+      out.write.push_back(max_distance <= 0 || dist[i] <= max_distance ? 1 : 0);
+    }
+  return out;
+}
+
+// Solves every domain, on `threads` threads (the calling one included, which
+// alone reports progress). Each result depends on its domain only.
+std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain>& domains, const DeepGuide& dg,
+                                        double max_distance, int threads, const ProgressFn& progress) {
+  std::vector<DomainResult> results(domains.size());
+  std::vector<std::exception_ptr> errors(domains.size());
+  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<bool> cancel{false};
+  const ProgressFn worker_progress = [&cancel](double) { return !cancel.load(std::memory_order_relaxed); };
+  const auto work = [&](bool main) {
+    for (std::size_t i; (i = next.fetch_add(1)) < domains.size();) {
+      try {
+        // A lone domain is solved on the calling thread with the real progress.
+        const ProgressFn& p = main && domains.size() == 1 ? progress : worker_progress;
+        results[i] = solve_domain(r, domains[i], dg, max_distance, p);
+      } catch (...) {
+        errors[i] = std::current_exception();
+        cancel = true;
+      }
+      ++done;
+      if (main && !cancel) {
+        try {
+          report(progress, static_cast<double>(done) / domains.size());
+        } catch (...) {
+          cancel = true;
+          throw;
+        }
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  const int extra = static_cast<int>(std::min<std::size_t>(domains.size(), threads)) - 1;
+  for (int t = 0; t < extra; ++t) pool.emplace_back(work, false);
+  std::exception_ptr mine;
+  try {
+    work(true);
+  } catch (...) {
+    mine = std::current_exception();
+  }
+  for (std::thread& t : pool) t.join();
+  if (mine) std::rethrow_exception(mine);
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return results;
 }
 
 }  // namespace
 
 bool fill_single_field(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
                        const ProgressFn& progress, TiledFillStats* stats) {
-  const int w = raster.width, h = raster.height;
-  const std::size_t cells = static_cast<std::size_t>(w) * h;
-  std::vector<double> z(cells);
-  std::vector<std::uint8_t> valid(cells);
+  Whole r;
+  r.w = raster.width;
+  r.h = raster.height;
+  const std::size_t cells = static_cast<std::size_t>(r.w) * r.h;
+  r.z.resize(cells);
+  r.valid.resize(cells);
   report(progress, 0.0);
-  raster.read(0, 0, w, h, z.data(), valid.data());
+  raster.read(0, 0, r.w, r.h, r.z.data(), r.valid.data());
 
   TiledFillStats st;
-  for (std::uint8_t v : valid) (v ? st.known_cells : st.void_cells) += 1;
+  for (std::uint8_t v : r.valid) (v ? st.known_cells : st.void_cells) += 1;
   if (stats) *stats = st;
   if (st.void_cells == 0) {
     report(progress, 1.0);
@@ -57,28 +190,33 @@ bool fill_single_field(const RasterAccess& raster, const FillParams& params, con
   }
   if (st.known_cells == 0) throw std::invalid_argument("the raster has no known cell to fill from");
 
-  // A void reaching far from data needs the guide's tension at a coarse
-  // scale and the guide's surface deep inside (one field under tension,
-  // solved to the usual tolerance, still carried a coast's slope 2 km up):
-  // leave such rasters to the tiles.
-  const std::vector<double> dist = distance_to_valid(valid.data(), w, h);
-  const double farthest = *std::max_element(dist.begin(), dist.end());
-  if (far_void_tension(farthest, 1) > 0) return false;
+  const std::vector<Domain> domains = find_domains(r);
+  DeepGuide dg;
+  prepare_guide(r, domains, params, dg);
   report(progress, 0.05);
+  const std::vector<DomainResult> results = solve_domains(r, domains, dg, tiling.max_distance,
+                                                          effective_threads(tiling.threads),
+                                                          sub_progress(progress, 0.05, 0.95));
+  // A void reaching far from data needs the guide's tension at a coarse scale
+  // and its surface deep inside (one field under tension, solved to the usual
+  // tolerance, still carried a coast's slope 2 km up): leave it to the tiles.
+  for (const DomainResult& res : results)
+    if (far_void_tension(res.farthest, 1) > 0) return false;
 
-  std::vector<CellState> state(cells);
-  for (std::size_t i = 0; i < cells; ++i) state[i] = valid[i] ? CellState::known : CellState::unknown;
-  pin_deep_cells(w, h, dist, farthest, valid, params, z, state);
-  thin_plate_smooth(FieldView{w, h, z.data(), state.data()}, ThinPlateSchedule{}, sub_progress(progress, 0.05, 0.95));
-
-  // Write the filled cells (those within max distance): reuse `valid` as the mask.
-  const double md = tiling.max_distance;
-  for (std::size_t i = 0; i < cells; ++i) {
-    valid[i] = !valid[i] && (md <= 0 || dist[i] <= md) ? 1 : 0;
-    st.cells_written += valid[i];
+  // The filled cells into z, and the write mask (reusing `valid`).
+  std::fill(r.valid.begin(), r.valid.end(), std::uint8_t{0});
+  for (std::size_t k = 0; k < domains.size(); ++k) {
+    std::size_t n = 0;
+    for (const VoidRun& run : domains[k].runs)
+      for (int x = run.x0; x < run.x1; ++x, ++n) {
+        const std::size_t i = r.index(x, run.y);
+        r.z[i] = results[k].values[n];
+        r.valid[i] = results[k].write[n];
+        st.cells_written += r.valid[i];
+      }
   }
   report(progress, 0.95);  // a refusal here leaves the raster untouched
-  raster.write(0, 0, w, h, z.data(), valid.data());
+  raster.write(0, 0, r.w, r.h, r.z.data(), r.valid.data());
   if (stats) *stats = st;
   report(progress, 1.0);
   return true;

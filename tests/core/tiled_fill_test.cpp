@@ -534,30 +534,47 @@ TEST(TiledFill, SmallAndLargeVoidsTogetherAreDeterministic) {
   EXPECT_LT(std::sqrt(se / n), 1.0);
 }
 
-// One field (docs/tiling.md, "One field"): a raster of at most 2^21 cells,
-// default tile size, is filled as one field — no tiles, the field's thin
-// plate exactly, every void written once.
-TEST(TiledFill, SmallRasterIsOneFieldWithTheFieldsThinPlate) {
-  MemRaster r(300, 170);
+// Small rasters (docs/tiling.md, "Small rasters"): a raster of at most 2^21
+// cells, default tile size, is filled without tiles, each void component in
+// its own field — its box grown by 32 + its longer side — so its values are
+// that field's thin plate, whatever other voids the raster holds.
+TEST(TiledFill, SmallRasterSolvesEachVoidInItsOwnField) {
+  MemRaster r(400, 300);
   for (int y = 0; y < r.h; ++y)
     for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
-  punch_disc(r, 150, 80, 30);
-  punch_disc(r, 2, 160, 12);  // at a corner
+  punch_disc(r, 80, 90, 10);  // box [70, 90] × [80, 100], extent 21: field [17, 143] × [27, 153]
   TiledFillStats stats;
   TiledFillHooks hooks;
   hooks.stats = &stats;
-  const std::vector<double> out = run(r, 0, 2, hooks);
+  const std::vector<double> alone = run(r, 0, 1, hooks);
   EXPECT_EQ(stats.tile_side, 0);
   EXPECT_EQ(stats.windows_solved, 0u);
   EXPECT_EQ(stats.cells_written, r.voids());
-  for (std::size_t i = 0; i < r.write_count.size(); ++i) ASSERT_EQ(r.write_count[i], r.valid[i] ? 0 : 1);
 
-  std::vector<double> z = r.z;
+  const int x0 = 17, y0 = 27, side = 127;
+  std::vector<double> z(static_cast<std::size_t>(side) * side);
   std::vector<CellState> state(z.size());
-  for (std::size_t i = 0; i < z.size(); ++i) state[i] = r.valid[i] ? CellState::known : CellState::unknown;
-  thin_plate_smooth(FieldView{r.w, r.h, z.data(), state.data()}, ThinPlateSchedule{});
-  EXPECT_TRUE(bit_identical(out, z));
-  EXPECT_TRUE(bit_identical(run(r, 0, 1), out));
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      z[static_cast<std::size_t>(y) * side + x] = r.z[r.at(x0 + x, y0 + y)];
+      state[static_cast<std::size_t>(y) * side + x] =
+          r.valid[r.at(x0 + x, y0 + y)] ? CellState::known : CellState::unknown;
+    }
+  thin_plate_smooth(FieldView{side, side, z.data(), state.data()}, ThinPlateSchedule{});
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x)
+      ASSERT_EQ(alone[r.at(x0 + x, y0 + y)], z[static_cast<std::size_t>(y) * side + x]) << x << "," << y;
+
+  // Other voids (one at a corner, one touching the first's field) change nothing of it.
+  punch_disc(r, 2, 290, 12);
+  punch_disc(r, 160, 100, 15);
+  std::fill(r.write_count.begin(), r.write_count.end(), 0);
+  const std::vector<double> both = run(r, 0, 2, hooks);
+  for (std::size_t i = 0; i < r.write_count.size(); ++i) ASSERT_EQ(r.write_count[i], r.valid[i] ? 0 : 1);
+  for (int y = 80; y <= 100; ++y)
+    for (int x = 70; x <= 90; ++x) ASSERT_EQ(both[r.at(x, y)], alone[r.at(x, y)]);
+  EXPECT_TRUE(r.complete());
+  EXPECT_TRUE(bit_identical(run(r, 0, 1), both));
 }
 
 TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
