@@ -11,6 +11,7 @@
 #include "mcmd/distance.hpp"
 #include "mcmd/thin_plate_schedule.hpp"
 #include "void_components.hpp"
+#include "void_field.hpp"
 
 namespace mcmd::detail {
 
@@ -19,8 +20,6 @@ bool single_field_applies(int width, int height, const FillParams& params, const
   const std::size_t cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   return smooth_default && tiling.tile_side == 0 && cells <= kSingleFieldMaxCells;
 }
-
-int domain_margin(int extent) { return kDomainMargin + extent / kDomainMarginDivisor; }
 
 namespace {
 
@@ -39,11 +38,7 @@ struct Domain {
   std::vector<VoidRun> runs;  // the component's cells
 };
 
-struct DomainResult {
-  double farthest = 0.0;            // from data, over the domain's void cells
-  std::vector<double> values;       // the component's cells, run after run
-  std::vector<std::uint8_t> write;  // and whether each is within max distance
-};
+using DomainResult = VoidFieldResult;
 
 std::vector<Domain> find_domains(const Whole& r) {
   ComponentFinder finder(r.w, std::max(r.w, r.h), std::size_t{1} << 40);
@@ -51,10 +46,7 @@ std::vector<Domain> find_domains(const Whole& r) {
   finder.finish();
   std::vector<Domain> out;
   for (SmallComponent& c : finder.small()) {
-    const int m = domain_margin(std::max(c.box.width(), c.box.height()));
-    const Box rect{std::max(0, c.box.x0 - m), std::max(0, c.box.y0 - m), std::min(r.w - 1, c.box.x1 + m),
-                   std::min(r.h - 1, c.box.y1 + m)};
-    out.push_back(Domain{c.box, rect, std::move(c.runs)});
+    out.push_back(Domain{c.box, void_field_rect(c.box, r.w, r.h), std::move(c.runs)});
   }
   return out;
 }
@@ -81,45 +73,22 @@ void prepare_guide(const Whole& r, const std::vector<Domain>& domains, const Fil
   dg.guide.solve(params);
 }
 
-// Solve one domain as a field. Deep inside large voids the surface is the
-// coarse guide's, as in tiles (docs/tiling.md): without it, the fill of a
-// large void depended on how much terrain its field held (the cascade's
-// coarse levels), with it on the void's own surroundings.
+// Solve one domain as a field (void_field.hpp). Deep inside large voids the
+// surface is the coarse guide's, as in tiles (docs/tiling.md): without it, the
+// fill of a large void depended on how much terrain its field held (the
+// cascade's coarse levels), with it on the void's own surroundings.
 DomainResult solve_domain(const Whole& r, const Domain& d, const DeepGuide& dg, double max_distance,
                           const ProgressFn& progress) {
   const int w = d.rect.width(), h = d.rect.height();
-  const std::size_t cells = static_cast<std::size_t>(w) * h;
-  std::vector<double> z(cells);
-  std::vector<std::uint8_t> valid(cells);
+  std::vector<double> z(static_cast<std::size_t>(w) * h);
+  std::vector<std::uint8_t> valid(z.size());
   for (int y = 0; y < h; ++y) {
     const std::size_t from = r.index(d.rect.x0, d.rect.y0 + y), to = static_cast<std::size_t>(y) * w;
     std::copy_n(r.z.begin() + from, w, z.begin() + to);
     std::copy_n(r.valid.begin() + from, w, valid.begin() + to);
   }
-  // Exact: a void cell's nearest known cell is next to its component.
-  const std::vector<double> dist = distance_to_valid(valid.data(), w, h);
-  DomainResult out;
-  for (const VoidRun& run : d.runs)
-    for (int x = run.x0; x < run.x1; ++x)
-      out.farthest = std::max(out.farthest, dist[static_cast<std::size_t>(run.y - d.rect.y0) * w + (x - d.rect.x0)]);
-  if (far_void_tension(out.farthest, 1) > 0) return out;  // the caller leaves the raster to tiles
-
-  std::vector<CellState> state(cells);
-  for (std::size_t i = 0; i < cells; ++i) {
-    state[i] = valid[i] ? CellState::known : CellState::unknown;
-    if (dg.ready() && dist[i] > dg.radius) {
-      z[i] = dg.guide.at(d.rect.x0 + static_cast<long long>(i % w), d.rect.y0 + static_cast<long long>(i / w));
-      state[i] = CellState::known;
-    }
-  }
-  thin_plate_smooth(FieldView{w, h, z.data(), state.data()}, ThinPlateSchedule{}, progress);
-  for (const VoidRun& run : d.runs)
-    for (int x = run.x0; x < run.x1; ++x) {
-      const std::size_t i = static_cast<std::size_t>(run.y - d.rect.y0) * w + (x - d.rect.x0);
-      out.values.push_back(z[i]);
-      out.write.push_back(max_distance <= 0 || dist[i] <= max_distance ? 1 : 0);
-    }
-  return out;
+  return solve_void_field(d.rect, d.runs, z.data(), valid.data(), DeepPins{&dg.guide, dg.radius}, max_distance,
+                          progress);
 }
 
 // Solves every domain, on `threads` threads (the calling one included, which

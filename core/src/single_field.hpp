@@ -19,14 +19,7 @@ constexpr std::size_t kSingleFieldMaxCells = std::size_t{1} << 21;
 // for tiles) and a raster of at most kSingleFieldMaxCells cells.
 bool single_field_applies(int width, int height, const FillParams& params, const TilingParams& tiling);
 
-// Each void component (void_components.hpp) is solved in its own field: its
-// bounding box grown by domain_margin(longer box side) cells on every side
-// (clipped to the raster). Other voids inside that field are solved with it
-// but written by their own field.
-// Measured on the 21 blob cases of bench/accuracy.py (docs/tiling.md).
-constexpr int kDomainMargin = 32;
-constexpr int kDomainMarginDivisor = 1;
-int domain_margin(int extent);
+// Each void component is solved in its own field (void_field.hpp).
 
 // Unknown cells farther than kGuideRadiusStrides · stride from data are pinned
 // to a coarse guide of this stride at least (the tiles' stride when larger).

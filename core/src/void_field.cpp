@@ -1,0 +1,52 @@
+#include "void_field.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "mcmd/distance.hpp"
+#include "mcmd/thin_plate_schedule.hpp"
+
+namespace mcmd::detail {
+
+int void_field_margin(int extent) { return kVoidFieldMargin + extent; }
+
+Box void_field_rect(const Box& box, int width, int height) {
+  const int m = void_field_margin(std::max(box.width(), box.height()));
+  return Box{std::max(0, box.x0 - m), std::max(0, box.y0 - m), std::min(width - 1, box.x1 + m),
+             std::min(height - 1, box.y1 + m)};
+}
+
+VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, const double* z_in,
+                                 const std::uint8_t* valid, const DeepPins& pins, double max_distance,
+                                 const ProgressFn& progress) {
+  const int w = rect.width(), h = rect.height();
+  const std::size_t cells = static_cast<std::size_t>(w) * h;
+  const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - rect.y0) * w + (x - rect.x0); };
+  // Exact: a void cell's nearest known cell is next to its component.
+  const std::vector<double> dist = distance_to_valid(valid, w, h);
+  VoidFieldResult out;
+  for (const VoidRun& run : runs)
+    for (int x = run.x0; x < run.x1; ++x) out.farthest = std::max(out.farthest, dist[at(x, run.y)]);
+  if (far_void_tension(out.farthest, 1) > 0) return out;
+
+  std::vector<double> z(z_in, z_in + cells);
+  std::vector<CellState> state(cells);
+  const bool pinned = pins.guide && pins.guide->ready();
+  for (std::size_t i = 0; i < cells; ++i) {
+    state[i] = valid[i] ? CellState::known : CellState::unknown;
+    if (pinned && dist[i] > pins.radius) {
+      z[i] = pins.guide->at(rect.x0 + static_cast<long long>(i % w), rect.y0 + static_cast<long long>(i / w));
+      state[i] = CellState::known;
+    }
+  }
+  thin_plate_smooth(FieldView{w, h, z.data(), state.data()}, ThinPlateSchedule{}, progress);
+  for (const VoidRun& run : runs)
+    for (int x = run.x0; x < run.x1; ++x) {
+      const std::size_t i = at(x, run.y);
+      out.values.push_back(z[i]);
+      out.write.push_back(max_distance <= 0 || dist[i] <= max_distance ? 1 : 0);
+    }
+  return out;
+}
+
+}  // namespace mcmd::detail

@@ -1,0 +1,44 @@
+// One void component solved in its own field (internal to the tiled fill;
+// docs/tiling.md, "Small rasters" and "Small voids"): the component's
+// bounding box grown by void_field_margin cells on every side, clipped to the
+// raster, filled by the smooth default method. Other voids inside the field are
+// solved with it but are not its output. The values depend on the field's
+// cells only, so any run, thread count or tile layout gives the same ones.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mcmd/coarse_guide.hpp"
+#include "mcmd/progress.hpp"
+#include "void_components.hpp"
+
+namespace mcmd::detail {
+
+// 32 + the box's longer side: measured on the blob benchmark (docs/tiling.md).
+constexpr int kVoidFieldMargin = 32;
+int void_field_margin(int extent);
+Box void_field_rect(const Box& box, int width, int height);
+
+// Unknown cells farther than `radius` from data are pinned to `guide`
+// (none when guide is null or not ready).
+struct DeepPins {
+  const CoarseGuide* guide = nullptr;
+  double radius = 0.0;
+};
+
+struct VoidFieldResult {
+  double farthest = 0.0;            // of the component's cells from data
+  std::vector<double> values;       // the component's cells, run after run
+  std::vector<std::uint8_t> write;  // and whether each lies within max distance
+};
+
+// Pre: z and valid hold the field `rect` (row-major, raster coordinates of
+// rect), which contains the component's runs and a known ring around them.
+// Post: when farthest > 128 cells (the coarse guide's tension is needed, see
+// far_void_tension) values is empty: the caller must fill it another way.
+VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, const double* z,
+                                 const std::uint8_t* valid, const DeepPins& pins, double max_distance,
+                                 const ProgressFn& progress = {});
+
+}  // namespace mcmd::detail
