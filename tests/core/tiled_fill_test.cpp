@@ -82,6 +82,14 @@ double terrain(int x, int y) {
          0.8 * x - 0.5 * y;
 }
 
+// Terrain everywhere, no void.
+MemRaster terrain_raster(int w, int h) {
+  MemRaster r(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  return r;
+}
+
 // Terrain everywhere, then voids: discs and scattered cells (hash under `drop`).
 MemRaster make_raster(int w, int h, double drop = 0.05) {
   MemRaster r(w, h);
@@ -282,9 +290,7 @@ TEST(TiledFill, VoidAcrossASeamIsOneSurface) {
 }
 
 TEST(TiledFill, VoidLargerThanATileFills) {
-  MemRaster r(300, 260);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  MemRaster r = terrain_raster(300, 260);
   for (int y = 20; y < 240; ++y)
     for (int x = 30; x < 270; ++x) r.valid[r.at(x, y)] = 0;  // 240×220 void, tiles of 33
   TiledFillStats stats;
@@ -332,9 +338,7 @@ TEST(TiledFill, TileSizesAgreeClosely) {
 }
 
 TEST(TiledFill, VoidFreeTilesAreNotSolved) {
-  MemRaster r(400, 400);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  MemRaster r = terrain_raster(400, 400);
   punch_disc(r, 30, 30, 5);
   TiledFillStats stats;
   TiledFillHooks hooks;
@@ -358,9 +362,7 @@ TEST(TiledFill, VoidFreeTilesAreNotSolved) {
 }
 
 TEST(TiledFill, MaxDistanceLeavesFarCellsUnwritten) {
-  MemRaster r(200, 150);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  MemRaster r = terrain_raster(200, 150);
   punch_disc(r, 100, 75, 30);
   punch_disc(r, 20, 20, 6);
   TilingParams tp;
@@ -377,9 +379,7 @@ TEST(TiledFill, MaxDistanceLeavesFarCellsUnwritten) {
 // Max distances beyond what a window sees are decided on the guide lattice
 // (exact here: a raster this small has a guide stride of 1).
 TEST(TiledFill, MaxDistanceBeyondTheHaloUsesTheGuide) {
-  MemRaster r(200, 150);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  MemRaster r = terrain_raster(200, 150);
   punch_disc(r, 100, 75, 60);
   TilingParams tp;
   tp.tile_side = 33;  // halo 16, band 4: exact up to 12 cells in a window
@@ -460,9 +460,7 @@ TEST(TiledFill, HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains) {
 // not depend on the tile layout, equal a direct fill of that grid, and every
 // cell of it is written exactly once.
 TEST(TiledFill, SmallVoidIsSolvedAloneWhateverTheTiles) {
-  MemRaster r(400, 300);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  MemRaster r = terrain_raster(400, 300);
   punch_disc(r, 128, 128, 6);  // on a seam crossing of tiles 33, 65 and 129
   punch_disc(r, 3, 200, 6);    // against the raster's left border (mirrored)
   const std::vector<double> a = run(r, 33, 2);
@@ -539,9 +537,7 @@ TEST(TiledFill, SmallAndLargeVoidsTogetherAreDeterministic) {
 // its own field — its box grown by 32 + its longer side — so its values are
 // that field's thin plate, whatever other voids the raster holds.
 TEST(TiledFill, SmallRasterSolvesEachVoidInItsOwnField) {
-  MemRaster r(400, 300);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  MemRaster r = terrain_raster(400, 300);
   punch_disc(r, 80, 90, 10);  // box [70, 90] × [80, 100], extent 21: field [17, 143] × [27, 153]
   TiledFillStats stats;
   TiledFillHooks hooks;
@@ -578,9 +574,7 @@ TEST(TiledFill, SmallRasterSolvesEachVoidInItsOwnField) {
 }
 
 TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
-  MemRaster r(200, 120);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  MemRaster r = terrain_raster(200, 120);
   punch_disc(r, 100, 60, 20);
   TilingParams tp;
   tp.max_distance = 5.0;
@@ -596,9 +590,7 @@ TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
 // beyond the size limit, and for voids reaching far from data (the guide's
 // tension and deep-void surface; see HugeVoidDoesNotExtrapolate...).
 TEST(TiledFill, TilesWhenAskedForRoughOrFarReachingVoids) {
-  MemRaster r(300, 300);
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x) r.z[r.at(x, y)] = terrain(x, y);
+  MemRaster r = terrain_raster(300, 300);
   punch_disc(r, 150, 150, 20);
   TiledFillStats stats;
   TiledFillHooks hooks;
