@@ -82,6 +82,14 @@ double terrain(int x, int y) {
          0.8 * x - 0.5 * y;
 }
 
+// Hooks that record a run's statistics (not copyable: hooks point at stats).
+struct Recorded {
+  TiledFillStats stats;
+  TiledFillHooks hooks;
+  Recorded() { hooks.stats = &stats; }
+  Recorded(const Recorded&) = delete;
+};
+
 // Terrain everywhere, no void.
 MemRaster terrain_raster(int w, int h) {
   MemRaster r(w, h);
@@ -293,9 +301,9 @@ TEST(TiledFill, VoidLargerThanATileFills) {
   MemRaster r = terrain_raster(300, 260);
   for (int y = 20; y < 240; ++y)
     for (int x = 30; x < 270; ++x) r.valid[r.at(x, y)] = 0;  // 240×220 void, tiles of 33
-  TiledFillStats stats;
-  TiledFillHooks hooks;
-  hooks.stats = &stats;
+  Recorded rec;
+  TiledFillStats& stats = rec.stats;
+  const TiledFillHooks& hooks = rec.hooks;
   run(r, 33, 2, hooks);
   EXPECT_TRUE(r.complete());
   EXPECT_EQ(r.known_writes, 0u);
@@ -340,9 +348,9 @@ TEST(TiledFill, TileSizesAgreeClosely) {
 TEST(TiledFill, VoidFreeTilesAreNotSolved) {
   MemRaster r = terrain_raster(400, 400);
   punch_disc(r, 30, 30, 5);
-  TiledFillStats stats;
-  TiledFillHooks hooks;
-  hooks.stats = &stats;
+  Recorded rec;
+  TiledFillStats& stats = rec.stats;
+  const TiledFillHooks& hooks = rec.hooks;
   run(r, 65, 2, hooks);
   EXPECT_EQ(stats.tiles_x * stats.tiles_y, 49);
   EXPECT_EQ(stats.windows_solved, 0u);  // a small void is solved alone
@@ -499,9 +507,9 @@ TEST(TiledFill, SmallAndLargeVoidsTogetherAreDeterministic) {
   MemRaster r = make_raster(401, 303, 0.01);  // scattered single cells: small components
   punch_disc(r, 200, 150, 70);                // a large one across several tiles
   punch_disc(r, 64, 64, 12);                  // a small one on a seam crossing
-  TiledFillStats stats;
-  TiledFillHooks hooks;
-  hooks.stats = &stats;
+  Recorded rec;
+  TiledFillStats& stats = rec.stats;
+  const TiledFillHooks& hooks = rec.hooks;
   const std::vector<double> one = run(r, 65, 1, hooks);
   EXPECT_GT(stats.small_components, 100u);
   EXPECT_GT(stats.windows_solved, 0u);
@@ -539,9 +547,9 @@ TEST(TiledFill, SmallAndLargeVoidsTogetherAreDeterministic) {
 TEST(TiledFill, SmallRasterSolvesEachVoidInItsOwnField) {
   MemRaster r = terrain_raster(400, 300);
   punch_disc(r, 80, 90, 10);  // box [70, 90] × [80, 100], extent 21: field [17, 143] × [27, 153]
-  TiledFillStats stats;
-  TiledFillHooks hooks;
-  hooks.stats = &stats;
+  Recorded rec;
+  TiledFillStats& stats = rec.stats;
+  const TiledFillHooks& hooks = rec.hooks;
   const std::vector<double> alone = run(r, 0, 1, hooks);
   EXPECT_EQ(stats.tile_side, 0);
   EXPECT_EQ(stats.windows_solved, 0u);
@@ -592,9 +600,9 @@ TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
 TEST(TiledFill, TilesWhenAskedForRoughOrFarReachingVoids) {
   MemRaster r = terrain_raster(300, 300);
   punch_disc(r, 150, 150, 20);
-  TiledFillStats stats;
-  TiledFillHooks hooks;
-  hooks.stats = &stats;
+  Recorded rec;
+  TiledFillStats& stats = rec.stats;
+  const TiledFillHooks& hooks = rec.hooks;
   run(r, 65, 2, hooks);
   EXPECT_EQ(stats.tile_side, 65);
   TilingParams tp;
