@@ -18,7 +18,7 @@ namespace mcmd::detail {
 bool single_field_applies(int width, int height, const FillParams& params, const TilingParams& tiling) {
   const bool smooth_default = params.method == Method::mcmd && !params.rs_auto && params.rs == 0;
   const std::size_t cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  return smooth_default && tiling.tile_side == 0 && cells <= kSingleFieldMaxCells;
+  return smooth_default && !tiling.always_tile && cells <= kSingleFieldMaxCells;
 }
 
 namespace {

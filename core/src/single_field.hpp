@@ -15,8 +15,9 @@ namespace mcmd::detail {
 // the peak of the tiled fill on large rasters.
 constexpr std::size_t kSingleFieldMaxCells = std::size_t{1} << 21;
 
-// The default smooth method, the default tile size (an explicit -tile asks
-// for tiles) and a raster of at most kSingleFieldMaxCells cells.
+// The default smooth method, tiles not forced (TilingParams::always_tile) and
+// a raster of at most kSingleFieldMaxCells cells. The tile size plays no part:
+// it is the size used when tiling.
 bool single_field_applies(int width, int height, const FillParams& params, const TilingParams& tiling);
 
 // Each void component is solved in its own field (void_field.hpp).

@@ -52,6 +52,7 @@ void check_inputs(const RasterAccess& raster, const TilingParams& tiling) {
   if (!std::isfinite(tiling.max_distance) || tiling.max_distance < 0)
     throw std::invalid_argument("max distance must be a finite number >= 0");
   if (tiling.threads < 0) throw std::invalid_argument("thread count must be >= 0");
+  effective_tile_side(raster.width, raster.height, tiling.tile_side);  // throws on a bad size, tiles or not
 }
 
 // A job: a small void component solved alone, or a tile's window.

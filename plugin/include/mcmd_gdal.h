@@ -12,7 +12,9 @@
  *               METHOD=mcmd|paper-ds|paper-te, DELTA=normalized|paper,
  *               I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT,
  *               RS=<fraction of the known elevation range>|auto, SEED,
- *               MAX_DISTANCE (cells, 0 = unlimited), TILE_SIZE (2^n+1, 0 = auto),
+ *               MAX_DISTANCE (cells, 0 = unlimited), TILE_SIZE (2^n+1, 0 = auto;
+ *               the size used when tiling), TILING (AUTO: rasters up to 2^21
+ *               cells are filled whole; ALWAYS: tiles whatever the size),
  *               NUM_THREADS (n|ALL_CPUS). Unknown names are errors.
  *  pfnProgress  GDAL progress callback (may be NULL); returning FALSE stops
  *               the fill with CPLE_UserInterrupt before anything is written.

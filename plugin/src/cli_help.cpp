@@ -73,14 +73,17 @@ Shape of the fill (what it does to the terrain):
                    (seed, cell position), not on tiling or threads.
   -o NAME=VALUE    Any other MCMDFillNodata option, e.g. -o RIDGE_I=2.
 
-Performance (the band is streamed through square tiles; memory depends on the
-tile size and thread count, not on the raster size; docs/tiling.md):
-  -tile size       Tile side in cells, 2^n+1 (e.g. 129, 257, 513); 0 = automatic
-                   (129, or less for a raster that fits in a smaller tile).
+Performance (a band of up to 2^21 cells is filled whole, one field per void;
+a larger one is streamed through square tiles, and memory depends on the tile
+size and thread count, not on the raster size; docs/tiling.md):
+  -tile size       Tile side in cells when tiling, 2^n+1 (e.g. 129, 257, 513);
+                   0 = automatic (129, or less for a raster that fits in a
+                   smaller tile). -o TILING=ALWAYS tiles small rasters too.
                    Larger tiles need more memory per thread (about 25 MB per
                    thread at 257, 90 MB at 513). The result is bit-identical
                    for a given tile size, whatever the thread count.
-  -threads n       Worker threads solving tiles, a number or ALL_CPUS (default).
+  -threads n       Worker threads solving tiles or voids, a number or ALL_CPUS
+                   (default).
   GDAL_CACHEMAX    GDAL's block cache; 64 MB unless set (--config or environment).
 
 Example:

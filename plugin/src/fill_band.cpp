@@ -55,6 +55,7 @@ void fill_band(GDALRasterBand& target, GDALRasterBand& source, const FillRequest
   BandAccess band(source, target, request);
   TilingParams tiling;
   tiling.tile_side = options.tile_size;
+  tiling.always_tile = options.always_tile;
   tiling.threads = options.num_threads;
   tiling.max_distance = options.max_distance;
   TiledFillStats stats;

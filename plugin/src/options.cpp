@@ -107,6 +107,12 @@ const std::map<std::string, Setter>& setters() {
          if (t != 0 && !is_tile_size(t)) fail(n, v, "0 (automatic) or 2^n+1 between 3 and 32769");
          o.tile_size = static_cast<int>(t);
        }},
+      {"TILING",
+       [](Options& o, auto& n, auto& v) {
+         const std::string t = upper(v);
+         if (t != "AUTO" && t != "ALWAYS") fail(n, v, "AUTO or ALWAYS");
+         o.always_tile = t == "ALWAYS";
+       }},
       {"NUM_THREADS",
        [](Options& o, auto& n, auto& v) {
          if (upper(v) == "ALL_CPUS") {
@@ -125,7 +131,7 @@ const std::map<std::string, Setter>& setters() {
 
 const char* option_names() {
   return "METHOD, DELTA, I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT, RS, SEED, "
-         "MAX_DISTANCE, TILE_SIZE, NUM_THREADS";
+         "MAX_DISTANCE, TILE_SIZE, TILING, NUM_THREADS";
 }
 
 Options parse_options(CSLConstList options) {

@@ -19,6 +19,7 @@ struct Options {
   FillParams fill{};          // algorithm parameters handed to mcmd::fill
   double max_distance = 0.0;  // cells; 0 = unlimited
   int tile_size = 0;          // 2^n+1 cells; 0 = automatic (mcmd::TilingParams::tile_side)
+  bool always_tile = false;   // TILING=ALWAYS (mcmd::TilingParams::always_tile)
   int num_threads = 0;        // 0 = all CPUs
 };
 

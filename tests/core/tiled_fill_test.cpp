@@ -121,6 +121,7 @@ void punch_disc(MemRaster& r, double cx, double cy, double radius) {
 std::vector<double> run(MemRaster& r, int tile, int threads, const TiledFillHooks& hooks = {}) {
   TilingParams tp;
   tp.tile_side = tile;
+  tp.always_tile = tile != 0;  // these tests are about tiles
   tp.threads = threads;
   tiled_fill(r.access(), FillParams{}, tp, {}, hooks);
   return r.out;

@@ -86,6 +86,7 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"NegativeRs", {"-rs", "-0.1", "SRC", "DST"}, "RS=-0.1"},
         ErrorCase{"NonNumeric", {"-I", "steep", "SRC", "DST"}, "I=steep"},
         ErrorCase{"TileNotPowerOfTwoPlusOne", {"-tile", "100", "SRC", "DST"}, "TILE_SIZE=100"},
+        ErrorCase{"UnknownTiling", {"-o", "TILING=SOMETIMES", "SRC", "DST"}, "TILING=SOMETIMES"},
         ErrorCase{"ZeroThreads", {"-threads", "0", "SRC", "DST"}, "NUM_THREADS=0"},
         ErrorCase{"UnknownMethod", {"-method", "kriging", "SRC", "DST"}, "METHOD=kriging"},
         ErrorCase{"NegativeMaxDistance", {"-md", "-5", "SRC", "DST"}, "MAX_DISTANCE=-5"},

@@ -44,11 +44,24 @@ TEST(CliTiling, ThreadCountDoesNotChangeOneBit) {
   const std::string src = make_tiled_source(dir);
   for (const char* tile : {"33", "0"}) {
     const std::string a = dir.file("a.tif"), b = dir.file("b.tif");
-    ASSERT_EQ(run_cli({"-q", "-tile", tile, "-threads", "1", src, a}).exit_code, 0);
-    ASSERT_EQ(run_cli({"-q", "-tile", tile, "-threads", "2", src, b}).exit_code, 0);
+    ASSERT_EQ(run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", tile, "-threads", "1", src, a}).exit_code, 0);
+    ASSERT_EQ(run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", tile, "-threads", "2", src, b}).exit_code, 0);
     EXPECT_EQ(raw_band(a), raw_band(b)) << "tile " << tile;
     EXPECT_EQ(file_bytes(a), file_bytes(b)) << "tile " << tile;
   }
+}
+
+// A small raster is filled whole (docs/tiling.md, "Small rasters"): -tile is
+// the size used when tiling, so alone it changes nothing; TILING=ALWAYS tiles.
+TEST(CliTiling, SmallRasterIsFilledWholeWhateverTheTileSize) {
+  TempDir dir;
+  const std::string src = make_tiled_source(dir);
+  const std::string plain = dir.file("plain.tif"), t257 = dir.file("t257.tif"), t65 = dir.file("t65.tif");
+  ASSERT_EQ(run_cli({"-q", src, plain}).exit_code, 0);
+  ASSERT_EQ(run_cli({"-q", "-tile", "257", "-threads", "1", src, t257}).exit_code, 0);
+  ASSERT_EQ(run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", "65", src, t65}).exit_code, 0);
+  EXPECT_EQ(raw_band(plain), raw_band(t257));
+  EXPECT_NE(raw_band(plain), raw_band(t65));
 }
 
 TEST(CliTiling, TileSizesFillTestdataCompletelyAndAlike) {
@@ -60,7 +73,7 @@ TEST(CliTiling, TileSizesFillTestdataCompletelyAndAlike) {
   std::vector<double> errors;
   for (const char* tile : {"257", "33", "17"}) {
     const std::string out = dir.file(std::string("t") + tile + ".tif");
-    const RunResult r = run_cli({"-q", "-tile", tile, src, out});
+    const RunResult r = run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", tile, src, out});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::vector<double> v = band_values(out);
     for (std::size_t i = 0; i < v.size(); ++i) {
@@ -81,8 +94,8 @@ TEST(CliTiling, InPlaceEqualsCopyAcrossManyTiles) {
   const std::string src = make_tiled_source(dir);
   const std::string copy = dir.file("copy.tif"), inplace = dir.file("inplace.tif");
   copy_file(src, inplace);
-  ASSERT_EQ(run_cli({"-q", "-tile", "33", src, copy}).exit_code, 0);
-  const RunResult r = run_cli({"-q", "-tile", "33", inplace});
+  ASSERT_EQ(run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", "33", src, copy}).exit_code, 0);
+  const RunResult r = run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", "33", inplace});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(raw_band(inplace), raw_band(copy));
 }
@@ -91,9 +104,9 @@ TEST(CliTiling, CompressedAndCogOutputsMatchThePlainOne) {
   TempDir dir;
   const std::string src = make_tiled_source(dir);
   const std::string plain = dir.file("plain.tif"), deflate = dir.file("deflate.tif"), cog = dir.file("cog.tif");
-  ASSERT_EQ(run_cli({"-q", "-tile", "65", src, plain}).exit_code, 0);
-  ASSERT_EQ(run_cli({"-q", "-tile", "65", "-co", "COMPRESS=DEFLATE", src, deflate}).exit_code, 0);
-  ASSERT_EQ(run_cli({"-q", "-tile", "65", "-of", "COG", src, cog}).exit_code, 0);
+  ASSERT_EQ(run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", "65", src, plain}).exit_code, 0);
+  ASSERT_EQ(run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", "65", "-co", "COMPRESS=DEFLATE", src, deflate}).exit_code, 0);
+  ASSERT_EQ(run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", "65", "-of", "COG", src, cog}).exit_code, 0);
   EXPECT_EQ(raw_band(deflate), raw_band(plain));
   EXPECT_EQ(raw_band(cog), raw_band(plain));
   // The work file is gone.
@@ -103,7 +116,7 @@ TEST(CliTiling, CompressedAndCogOutputsMatchThePlainOne) {
 TEST(CliTiling, MaxDistanceLargerThanTheHalo) {
   TempDir dir;
   const std::string src = make_tiled_source(dir), out = dir.file("out.tif");
-  ASSERT_EQ(run_cli({"-q", "-tile", "17", "-md", "40", src, out}).exit_code, 0);
+  ASSERT_EQ(run_cli({"-q", "-o", "TILING=ALWAYS", "-tile", "17", "-md", "40", src, out}).exit_code, 0);
   const std::vector<double> in = band_values(src), v = band_values(out);
   std::size_t voids = 0, filled = 0;
   for (std::size_t i = 0; i < v.size(); ++i)

@@ -29,6 +29,9 @@ struct TilingParams {
   int tile_side = 0;          // 0 = default (kDefaultTileSide), else 2^k + 1, k >= 1
   int threads = 0;            // 0 = all cores
   double max_distance = 0.0;  // cells; 0 = unlimited (see docs/tiling.md for its exactness)
+  // Tiles even where the raster is small enough to fill whole (docs/tiling.md,
+  // "Small rasters"); tile_side alone does not ask for tiles.
+  bool always_tile = false;
 };
 
 constexpr int kDefaultTileSide = 129;  // measured: see docs/tiling.md
