@@ -17,7 +17,30 @@ struct Weights1D {
   int count = 0;
   double w[4] = {0, 0, 0, 0};
 };
-Weights1D cubic_weights_1d(int x, int mc);
+// Inline: the multigrid transfers call it for every cell.
+inline Weights1D cubic_weights_1d(int x, int mc) {
+  Weights1D r;
+  if ((x & 1) == 0) {
+    r.first = x / 2;
+    r.count = 1;
+    r.w[0] = 1.0;
+    return r;
+  }
+  const int a = (x - 1) / 2;  // left coarse neighbour
+  const bool left = a - 1 >= 0;
+  const bool right = a + 2 <= mc - 1;
+  if (left && right) {
+    r = {a - 1, 4, {-1.0 / 16, 9.0 / 16, 9.0 / 16, -1.0 / 16}};
+  } else if (left) {
+    r = {a - 1, 3, {-1.0 / 8, 3.0 / 4, 3.0 / 8, 0.0}};
+  } else if (right) {
+    r = {a, 3, {3.0 / 8, 3.0 / 4, -1.0 / 8, 0.0}};
+  } else {
+    r = {a, 2, {0.5, 0.5, 0.0, 0.0}};
+  }
+  return r;
+}
+
 
 // The interpolated value at fine cell (x, y) from a coarse lattice of mw×mh
 // cells (row-major). Pre: mw, mh >= 2, 0 <= x <= 2mw-2, 0 <= y <= 2mh-2.
