@@ -113,19 +113,39 @@ void relax_border_cell(Lattice& lat, const double* rhs, int x, int y, double ome
 
 }  // namespace
 
-void relax(Lattice& lat, const double* rhs, int sweeps, double omega) {
+namespace {
+
+void relax_span(Lattice& lat, const double* rhs, const Span& sp, double omega) {
   const int w = lat.w, h = lat.h;
+  if (sp.y < 2 || sp.y > h - 3) {
+    for (int x = sp.x0; x < sp.x1; ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
+    return;
+  }
+  // Split the run into border cells on the left, interior, border on the right.
+  const int a = std::max(sp.x0, 2), b = std::min(sp.x1, w - 2);
+  for (int x = sp.x0; x < std::min(sp.x1, 2); ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
+  if (b > a) relax_interior_run(lat, lat.index(a, sp.y), b - a, rhs, omega);
+  for (int x = std::max({sp.x0, w - 2, a}); x < sp.x1; ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
+}
+
+}  // namespace
+
+void relax(Lattice& lat, const double* rhs, int sweeps, double omega, int threads) {
+  if (!banded(lat)) {
+    for (int k = 0; k < sweeps; ++k)
+      for (const Span& sp : lat.spans) relax_span(lat, rhs, sp, omega);
+    return;
+  }
+  const std::vector<std::size_t> start = band_starts(lat);
+  const int bands = static_cast<int>(start.size()) - 1;
   for (int k = 0; k < sweeps; ++k)
-    for (const Span& sp : lat.spans) {
-      if (sp.y < 2 || sp.y > h - 3) {
-        for (int x = sp.x0; x < sp.x1; ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
-        continue;
+    for (int phase = 0; phase < 2; ++phase) {
+      const int count = (bands - phase + 1) / 2;
+#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
+      for (int c = 0; c < count; ++c) {
+        const int b = phase + 2 * c;
+        for (std::size_t i = start[b]; i < start[b + 1]; ++i) relax_span(lat, rhs, lat.spans[i], omega);
       }
-      // Split the run into border cells on the left, interior, border on the right.
-      const int a = std::max(sp.x0, 2), b = std::min(sp.x1, w - 2);
-      for (int x = sp.x0; x < std::min(sp.x1, 2); ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
-      if (b > a) relax_interior_run(lat, lat.index(a, sp.y), b - a, rhs, omega);
-      for (int x = std::max({sp.x0, w - 2, a}); x < sp.x1; ++x) relax_border_cell(lat, rhs, x, sp.y, omega);
     }
 }
 
@@ -162,8 +182,14 @@ void residual_run(const Lattice& lat, const double* rhs, const Span& sp, double*
   for (int x = std::max(b, a); x < sp.x1; ++x) out[x - sp.x0] = residual_at(lat, rhs, x, sp.y);
 }
 
-void residual(const Lattice& lat, const double* rhs, std::vector<double>& r) {
-  for (const Span& sp : lat.spans) residual_run(lat, rhs, sp, r.data() + lat.index(sp.x0, sp.y));
+void residual(const Lattice& lat, const double* rhs, std::vector<double>& r, int threads) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(lat.spans.size());
+  threads = team(lat, threads);
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const Span& sp = lat.spans[static_cast<std::size_t>(k)];
+    residual_run(lat, rhs, sp, r.data() + lat.index(sp.x0, sp.y));
+  }
 }
 
 }  // namespace mcmd

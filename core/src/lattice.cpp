@@ -8,6 +8,19 @@ std::size_t Lattice::free_count() const {
   return n;
 }
 
+bool banded(const Lattice& lat) { return lat.h > 2 * kBandRows && lat.free_count() >= kBandedMinFree; }
+
+std::vector<std::size_t> band_starts(const Lattice& lat) {
+  const int bands = (lat.h + kBandRows - 1) / kBandRows;
+  std::vector<std::size_t> start(static_cast<std::size_t>(bands) + 1, lat.spans.size());
+  std::size_t k = 0;
+  for (int b = 0; b < bands; ++b) {
+    while (k < lat.spans.size() && lat.spans[k].y < b * kBandRows) ++k;
+    start[b] = k;
+  }
+  return start;
+}
+
 std::vector<Span> free_spans(const std::vector<std::uint8_t>& pinned, int w, int h) {
   std::vector<Span> out;
   for (int y = 0; y < h; ++y) {

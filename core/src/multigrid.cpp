@@ -11,6 +11,42 @@ namespace mcmd {
 
 namespace {
 
+// fn(i0, n) for the cells [i0, i0 + n) of every span, on `threads` threads
+// (each span's cells are independent of the others').
+template <class Fn>
+void for_spans(const Lattice& lat, int threads, Fn fn) {
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(lat.spans.size());
+  threads = team(lat, threads);
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    const Span& sp = lat.spans[static_cast<std::size_t>(k)];
+    fn(lat.index(sp.x0, sp.y), sp.x1 - sp.x0);
+  }
+}
+
+// Σ fn(i0, n) over the spans, summed per fixed chunk of spans and then in
+// chunk order: the same bits for any thread count.
+template <class Fn>
+double sum_spans(const Lattice& lat, int threads, Fn fn) {
+  const std::size_t chunks = (lat.spans.size() + kSumChunkSpans - 1) / kSumChunkSpans;
+  std::vector<double> part(chunks, 0.0);
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(chunks);
+  threads = team(lat, threads);
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+  for (std::ptrdiff_t c = 0; c < n; ++c) {
+    const std::size_t end = std::min(lat.spans.size(), (static_cast<std::size_t>(c) + 1) * kSumChunkSpans);
+    double acc = 0.0;
+    for (std::size_t k = static_cast<std::size_t>(c) * kSumChunkSpans; k < end; ++k) {
+      const Span& sp = lat.spans[k];
+      acc += fn(lat.index(sp.x0, sp.y), sp.x1 - sp.x0);
+    }
+    part[static_cast<std::size_t>(c)] = acc;
+  }
+  double total = 0.0;
+  for (double v : part) total += v;
+  return total;
+}
+
 // Zero `v` over the free cells of `lat`.
 void zero_free(const Lattice& lat, std::vector<double>& v) {
   for (const Span& sp : lat.spans)
@@ -29,7 +65,7 @@ std::pair<int, int> coarse_columns(int x0, int x1, int mw) {
 // read), and only columns near free cells are touched: the cost follows the
 // free cells, not the lattice.
 void restrict_residual(const Lattice& fine, const double* rhs, double scale, const Lattice& coarse,
-                       std::vector<double>& row, std::vector<double>& b) {
+                       std::vector<double>& row, std::vector<double>& b, std::vector<double>& res, int threads) {
   const int mw = coarse.w, mh = coarse.h;
   zero_free(coarse, b);
   int lo = mw, hi = -1;  // columns of `row` in use
@@ -43,7 +79,8 @@ void restrict_residual(const Lattice& fine, const double* rhs, double scale, con
     lo = mw;
     hi = -1;
   };
-  std::vector<double> res(static_cast<std::size_t>(fine.w));
+  res.resize(fine.z.size());
+  residual(fine, rhs, res, threads);
   int current = -1;
   for (const Span& sp : fine.spans) {
     if (sp.y != current && current >= 0) flush(current);
@@ -51,9 +88,9 @@ void restrict_residual(const Lattice& fine, const double* rhs, double scale, con
     const auto [c0, c1] = coarse_columns(sp.x0, sp.x1, mw);
     lo = std::min(lo, c0);
     hi = std::max(hi, c1);
-    residual_run(fine, rhs, sp, res.data());
+    const double* rr = res.data() + fine.index(0, sp.y);
     for (int x = sp.x0; x < sp.x1; ++x) {
-      const double v = scale * res[x - sp.x0];
+      const double v = scale * rr[x];
       if ((x & 1) == 0) {  // a coarse cell's own position: weight 1
         row[x / 2] += v;
         continue;
@@ -66,27 +103,36 @@ void restrict_residual(const Lattice& fine, const double* rhs, double scale, con
 }
 
 // fine.z += P e at the free cells, separably (along y into one row, then x),
-// each run interpolating only the coarse columns it needs.
-void add_correction(Lattice& fine, const Lattice& coarse, std::vector<double>& row) {
+// each run interpolating only the coarse columns it needs (runs are
+// independent: any thread count).
+void add_correction(Lattice& fine, const Lattice& coarse, int threads) {
   const int mw = coarse.w, mh = coarse.h;
-  for (const Span& sp : fine.spans) {
-    const Weights1D wy = cubic_weights_1d(sp.y, mh);
-    const auto [c0, c1] = coarse_columns(sp.x0, sp.x1, mw);
-    std::fill(row.begin() + c0, row.begin() + c1 + 1, 0.0);
-    for (int j = 0; j < wy.count; ++j) {
-      const double* e = coarse.z.data() + static_cast<std::ptrdiff_t>(wy.first + j) * mw;
-      for (int c = c0; c <= c1; ++c) row[c] += wy.w[j] * e[c];
-    }
-    double* z = fine.z.data() + fine.index(0, sp.y);
-    for (int x = sp.x0; x < sp.x1; ++x) {
-      if ((x & 1) == 0) {
-        z[x] += row[x / 2];
-        continue;
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(fine.spans.size());
+  threads = team(fine, threads);
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    std::vector<double> row(static_cast<std::size_t>(mw), 0.0);
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const Span& sp = fine.spans[static_cast<std::size_t>(k)];
+      const Weights1D wy = cubic_weights_1d(sp.y, mh);
+      const auto [c0, c1] = coarse_columns(sp.x0, sp.x1, mw);
+      std::fill(row.begin() + c0, row.begin() + c1 + 1, 0.0);
+      for (int j = 0; j < wy.count; ++j) {
+        const double* e = coarse.z.data() + static_cast<std::ptrdiff_t>(wy.first + j) * mw;
+        for (int c = c0; c <= c1; ++c) row[c] += wy.w[j] * e[c];
       }
-      const Weights1D w = cubic_weights_1d(x, mw);
-      double v = 0.0;
-      for (int i = 0; i < w.count; ++i) v += w.w[i] * row[w.first + i];
-      z[x] += v;
+      double* z = fine.z.data() + fine.index(0, sp.y);
+      for (int x = sp.x0; x < sp.x1; ++x) {
+        if ((x & 1) == 0) {
+          z[x] += row[x / 2];
+          continue;
+        }
+        const Weights1D w = cubic_weights_1d(x, mw);
+        double v = 0.0;
+        for (int i = 0; i < w.count; ++i) v += w.w[i] * row[w.first + i];
+        z[x] += v;
+      }
     }
   }
 }
@@ -106,55 +152,57 @@ Multigrid::Multigrid(const Lattice& finest, VCycleSchedule schedule) : schedule_
   for (Lattice& c : coarse_) std::fill(c.z.begin(), c.z.end(), 0.0);
   rhs_.resize(coarse_.size());
   for (std::size_t k = 0; k < coarse_.size(); ++k) rhs_[k].assign(coarse_[k].z.size(), 0.0);
+  res_.resize(coarse_.size());
 }
 
 void Multigrid::v_cycle(Lattice& finest) { cycle(finest, nullptr, static_cast<int>(coarse_.size()) - 1); }
 
 // `k` indexes the coarse lattice below `fine` (-1: none, solve by sweeping).
 void Multigrid::cycle(Lattice& fine, const double* rhs, int k) {
+  const int threads = schedule_.threads;
   if (k < 0) {
-    relax(fine, rhs, schedule_.coarsest_sweeps);
+    relax(fine, rhs, schedule_.coarsest_sweeps, 1.0, threads);
     return;
   }
-  relax(fine, rhs, schedule_.pre_sweeps);
+  relax(fine, rhs, schedule_.pre_sweeps, 1.0, threads);
   Lattice& coarse = coarse_[k];
   if (coarse.spans.empty()) {  // nothing free below: smoothing is all we can do
-    relax(fine, rhs, schedule_.post_sweeps);
+    relax(fine, rhs, schedule_.post_sweeps, 1.0, threads);
     return;
   }
   // Coarse right-hand side 4·Pᵀr: on unit lattices Pᵀ A_h P ≈ A_2h / 4 for the
   // 4th-order thin-plate operator (column sums of P are 4, h⁴ scaling 1/16).
   std::vector<double> row(coarse.w);
-  restrict_residual(fine, rhs, 4.0, coarse, row, rhs_[k]);
+  restrict_residual(fine, rhs, 4.0, coarse, row, rhs_[k], res_[k], threads);
 
   zero_free(coarse, coarse.z);
   cycle(coarse, rhs_[k].data(), k - 1);
 
-  add_correction(fine, coarse, row);
-  relax(fine, rhs, schedule_.post_sweeps);
+  add_correction(fine, coarse, threads);
+  relax(fine, rhs, schedule_.post_sweeps, 1.0, threads);
 }
 
 namespace {
 
-double dot_free(const Lattice& lat, const std::vector<double>& a, const std::vector<double>& b) {
-  double s = 0.0;
-  for (const Span& sp : lat.spans) {
-    const std::size_t i0 = lat.index(sp.x0, sp.y);
-    for (int t = 0; t < sp.x1 - sp.x0; ++t) s += a[i0 + t] * b[i0 + t];
-  }
-  return s;
+double dot_free(const Lattice& lat, const std::vector<double>& a, const std::vector<double>& b, int threads) {
+  return sum_spans(lat, threads, [&](std::size_t i0, int n) {
+    double s = 0.0;
+    for (int t = 0; t < n; ++t) s += a[i0 + t] * b[i0 + t];
+    return s;
+  });
 }
 
 }  // namespace
 
 int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations) {
   if (finest.spans.empty()) return 0;
+  const int threads = schedule_.threads;
   const int top = static_cast<int>(coarse_.size()) - 1;
   const std::size_t cells = finest.z.size();
   // r = -A z at the free cells (the problem is A z = 0 with pinned cells fixed).
   std::vector<double> r(cells, 0.0);
-  residual(finest, nullptr, r);
-  const double r0 = std::sqrt(dot_free(finest, r, r));
+  residual(finest, nullptr, r, threads);
+  const double r0 = std::sqrt(dot_free(finest, r, r, threads));
   if (!(r0 > 0)) return 0;
   // Work lattice: the same free cells, pinned cells 0 (directions and
   // preconditioned residuals vanish there).
@@ -173,58 +221,49 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations) {
   // Only free cells are ever written (work.z stays 0 at pinned cells), so
   // every copy runs over the spans: the cost follows the unknown cells.
   const auto copy_free = [&](const std::vector<double>& from, std::vector<double>& to) {
-    for (const Span& sp : work.spans) {
-      const std::size_t i0 = work.index(sp.x0, sp.y);
-      std::copy(from.begin() + i0, from.begin() + i0 + (sp.x1 - sp.x0), to.begin() + i0);
-    }
+    for_spans(work, threads, [&](std::size_t i0, int n) { std::copy_n(from.begin() + i0, n, to.begin() + i0); });
   };
   const auto precondition = [&](const std::vector<double>& rhs, std::vector<double>& out) {
-    for (const Span& sp : work.spans) {
-      const std::size_t i0 = work.index(sp.x0, sp.y);
-      std::fill(work.z.begin() + i0, work.z.begin() + i0 + (sp.x1 - sp.x0), 0.0);
-    }
+    for_spans(work, threads, [&](std::size_t i0, int n) { std::fill_n(work.z.begin() + i0, n, 0.0); });
     cycle(work, rhs.data(), top);
     copy_free(work.z, out);
   };
   const auto apply = [&](const std::vector<double>& v, std::vector<double>& out) {  // out = A v
     copy_free(v, work.z);
-    for (const Span& sp : work.spans) {
-      double* o = out.data() + work.index(sp.x0, sp.y);
-      residual_run(work, nullptr, sp, o);
-      for (int t = 0; t < sp.x1 - sp.x0; ++t) o[t] = -o[t];
-    }
+    residual(work, nullptr, out, threads);
+    for_spans(work, threads, [&](std::size_t i0, int n) {
+      for (int t = 0; t < n; ++t) out[i0 + t] = -out[i0 + t];
+    });
   };
   precondition(r, zv);
   copy_free(zv, p);
-  double rz = dot_free(finest, r, zv);
+  double rz = dot_free(finest, r, zv, threads);
   int it = 0;
   while (it < max_iterations) {
     apply(p, q);
-    const double pq = dot_free(finest, p, q);
+    const double pq = dot_free(finest, p, q, threads);
     if (!(pq > 0)) break;
     const double alpha = rz / pq;
     copy_free(r, r_old);
-    for (const Span& sp : finest.spans) {
-      const std::size_t i0 = finest.index(sp.x0, sp.y);
-      for (int t = 0; t < sp.x1 - sp.x0; ++t) {
+    for_spans(finest, threads, [&](std::size_t i0, int n) {
+      for (int t = 0; t < n; ++t) {
         finest.z[i0 + t] += alpha * p[i0 + t];
         r[i0 + t] -= alpha * q[i0 + t];
       }
-    }
+    });
     ++it;
-    if (std::sqrt(dot_free(finest, r, r)) <= rel_tol * r0) break;
+    if (std::sqrt(dot_free(finest, r, r, threads)) <= rel_tol * r0) break;
     precondition(r, zv);
-    double num = 0.0;
-    for (const Span& sp : finest.spans) {
-      const std::size_t i0 = finest.index(sp.x0, sp.y);
-      for (int t = 0; t < sp.x1 - sp.x0; ++t) num += zv[i0 + t] * (r[i0 + t] - r_old[i0 + t]);
-    }
+    const double num = sum_spans(finest, threads, [&](std::size_t i0, int n) {
+      double acc = 0.0;
+      for (int t = 0; t < n; ++t) acc += zv[i0 + t] * (r[i0 + t] - r_old[i0 + t]);
+      return acc;
+    });
     const double beta = rz > 0 ? num / rz : 0.0;
-    rz = dot_free(finest, r, zv);
-    for (const Span& sp : finest.spans) {
-      const std::size_t i0 = finest.index(sp.x0, sp.y);
-      for (int t = 0; t < sp.x1 - sp.x0; ++t) p[i0 + t] = zv[i0 + t] + beta * p[i0 + t];
-    }
+    rz = dot_free(finest, r, zv, threads);
+    for_spans(finest, threads, [&](std::size_t i0, int n) {
+      for (int t = 0; t < n; ++t) p[i0 + t] = zv[i0 + t] + beta * p[i0 + t];
+    });
   }
   return it;
 }

@@ -78,7 +78,7 @@ void prepare_guide(const Whole& r, const std::vector<Domain>& domains, const Fil
 // fill of a large void depended on how much terrain its field held (the
 // cascade's coarse levels), with it on the void's own surroundings.
 DomainResult solve_domain(const Whole& r, const Domain& d, const DeepGuide& dg, double max_distance,
-                          const ProgressFn& progress) {
+                          const ProgressFn& progress, int threads) {
   const int w = d.rect.width(), h = d.rect.height();
   std::vector<double> z(static_cast<std::size_t>(w) * h);
   std::vector<std::uint8_t> valid(z.size());
@@ -88,7 +88,7 @@ DomainResult solve_domain(const Whole& r, const Domain& d, const DeepGuide& dg, 
     std::copy_n(r.valid.begin() + from, w, valid.begin() + to);
   }
   return solve_void_field(d.rect, d.runs, z.data(), valid.data(), DeepPins{&dg.guide, dg.radius}, max_distance,
-                          progress);
+                          progress, threads);
 }
 
 // Solves every domain, on `threads` threads (the calling one included, which
@@ -103,9 +103,11 @@ std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain
   const auto work = [&](bool main) {
     for (std::size_t i; (i = next.fetch_add(1)) < domains.size();) {
       try {
-        // A lone domain is solved on the calling thread with the real progress.
-        const ProgressFn& p = main && domains.size() == 1 ? progress : worker_progress;
-        results[i] = solve_domain(r, domains[i], dg, max_distance, p);
+        // A lone domain is solved on the calling thread with the real progress
+        // and every thread inside its solver.
+        const bool lone = domains.size() == 1;
+        const ProgressFn& p = main && lone ? progress : worker_progress;
+        results[i] = solve_domain(r, domains[i], dg, max_distance, p, lone ? threads : 1);
       } catch (...) {
         errors[i] = std::current_exception();
         cancel = true;

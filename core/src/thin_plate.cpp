@@ -206,11 +206,12 @@ void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule
     start_coarsest(levels[0], estimates[0]);
   }
   if (finest > 0 && schedule.spring > 0) attach_springs(levels[0], estimates[0], schedule.spring);
-  relax(levels[0], nullptr, cascade_sweeps(schedule, finest), schedule.omega);
+  const int threads = schedule.vcycle.threads;
+  relax(levels[0], nullptr, cascade_sweeps(schedule, finest), schedule.omega, threads);
   for (int k = 1; k <= finest; ++k) {
     start_from_coarser(levels[k], levels[k - 1], k < finest ? &estimates[k] : nullptr, schedule.start);
     if (k < finest && schedule.spring > 0) attach_springs(levels[k], estimates[k], schedule.spring);
-    relax(levels[k], nullptr, cascade_sweeps(schedule, finest - k), schedule.omega);
+    relax(levels[k], nullptr, cascade_sweeps(schedule, finest - k), schedule.omega, threads);
     report(progress, 0.05 + 0.35 * k / finest);
   }
 

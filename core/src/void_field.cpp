@@ -18,7 +18,7 @@ Box void_field_rect(const Box& box, int width, int height) {
 
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, const double* z_in,
                                  const std::uint8_t* valid, const DeepPins& pins, double max_distance,
-                                 const ProgressFn& progress) {
+                                 const ProgressFn& progress, int threads) {
   const int w = rect.width(), h = rect.height();
   const std::size_t cells = static_cast<std::size_t>(w) * h;
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - rect.y0) * w + (x - rect.x0); };
@@ -39,7 +39,9 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
       state[i] = CellState::known;
     }
   }
-  thin_plate_smooth(FieldView{w, h, z.data(), state.data()}, ThinPlateSchedule{}, progress);
+  ThinPlateSchedule schedule;
+  schedule.vcycle.threads = threads;
+  thin_plate_smooth(FieldView{w, h, z.data(), state.data()}, schedule, progress);
   for (const VoidRun& run : runs)
     for (int x = run.x0; x < run.x1; ++x) {
       const std::size_t i = at(x, run.y);

@@ -37,8 +37,9 @@ struct VoidFieldResult {
 // rect), which contains the component's runs and a known ring around them.
 // Post: when farthest > 128 cells (the coarse guide's tension is needed, see
 // far_void_tension) values is empty: the caller must fill it another way.
+// `threads` run the solver of a large field (same result for any count).
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, const double* z,
                                  const std::uint8_t* valid, const DeepPins& pins, double max_distance,
-                                 const ProgressFn& progress = {});
+                                 const ProgressFn& progress = {}, int threads = 1);
 
 }  // namespace mcmd::detail

@@ -31,7 +31,8 @@ ThinPlateRow thin_plate_row(const double* z, int w, int h, int x, int y, double 
 
 // `sweeps` lexicographic SOR sweeps of A z = rhs over the free cells (rhs may
 // be null for 0), factor `omega` (1 = Gauss-Seidel). Pinned cells never change.
-void relax(Lattice& lat, const double* rhs, int sweeps, double omega = 1.0);
+// Banded lattices (lattice.hpp) run on `threads` threads, same result for any count.
+void relax(Lattice& lat, const double* rhs, int sweeps, double omega = 1.0, int threads = 1);
 
 // rhs - A z at one cell (rhs may be null); with springs, A includes the soft
 // data term: (A z)_p += spring_p (z_p - target_p).
@@ -42,6 +43,6 @@ void residual_run(const Lattice& lat, const double* rhs, const Span& sp, double*
 
 // r = rhs - A z at the free cells; entries of pinned cells are left as they
 // are (keep them 0). Pre: r.size() == z.size().
-void residual(const Lattice& lat, const double* rhs, std::vector<double>& r);
+void residual(const Lattice& lat, const double* rhs, std::vector<double>& r, int threads = 1);
 
 }  // namespace mcmd

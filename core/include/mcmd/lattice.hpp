@@ -39,6 +39,21 @@ struct Lattice {
   std::size_t free_count() const;
 };
 
+// Large lattices are relaxed in bands of kBandRows rows: even bands, then odd
+// ones, each in raster order. Bands two apart never touch (the stencil reaches
+// 2 rows), so the bands of a phase may run on any number of threads with the
+// same result. Whether a lattice is banded depends on its free cells only.
+constexpr int kBandRows = 32;
+constexpr std::size_t kBandedMinFree = std::size_t{1} << 17;
+bool banded(const Lattice& lat);
+// Threads worth using on `lat`: `threads` when banded, else 1 (small lattices
+// cost less than a thread team's start).
+inline int team(const Lattice& lat, int threads) { return threads > 1 && banded(lat) ? threads : 1; }
+// Index of the first span of each band of kBandRows rows, plus spans.size().
+std::vector<std::size_t> band_starts(const Lattice& lat);
+// Fixed chunks of spans for sums whose order must not depend on the threads.
+constexpr std::size_t kSumChunkSpans = 256;
+
 // Runs of cells with pinned == 0, row by row. Pre: pinned.size() == w·h.
 std::vector<Span> free_spans(const std::vector<std::uint8_t>& pinned, int w, int h);
 

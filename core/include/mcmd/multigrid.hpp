@@ -14,6 +14,7 @@ struct VCycleSchedule {
   int coarsest_side = 5;   // solve here by sweeping only
   int coarsest_sweeps = 60;
   CoarsePin coarse_pin = CoarsePin::neighbourhood;
+  int threads = 1;         // for banded lattices and span loops: any count gives the same bits
 };
 
 // Corrections live on coarser lattices whose pinned cells follow
@@ -48,6 +49,7 @@ class Multigrid {
   VCycleSchedule schedule_;
   std::vector<Lattice> coarse_;                // coarse to fine, z = correction
   std::vector<std::vector<double>> rhs_;       // right-hand side of coarse_[k]
+  std::vector<std::vector<double>> res_;       // residual of the lattice above coarse_[k]
 };
 
 }  // namespace mcmd
