@@ -8,7 +8,7 @@
 
 namespace mcmd::detail {
 
-int void_field_margin(int extent) { return kVoidFieldMargin + extent; }
+int void_field_margin(int extent) { return std::min(kVoidFieldMargin, 8 + 2 * extent) + extent; }
 
 Box void_field_rect(const Box& box, int width, int height) {
   const int m = void_field_margin(std::max(box.width(), box.height()));

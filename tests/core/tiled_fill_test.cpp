@@ -543,7 +543,8 @@ TEST(TiledFill, SmallAndLargeVoidsTogetherAreDeterministic) {
 
 // Small rasters (docs/tiling.md, "Small rasters"): a raster of at most 2^21
 // cells, default tile size, is filled without tiles, each void component in
-// its own field — its box grown by 32 + its longer side — so its values are
+// its own field — its box grown by min(32, 8 + 2·e) + e, e its longer side (21
+// here: 53) — so its values are
 // that field's thin plate, whatever other voids the raster holds.
 TEST(TiledFill, SmallRasterSolvesEachVoidInItsOwnField) {
   MemRaster r = terrain_raster(400, 300);
