@@ -376,6 +376,7 @@ TEST(TiledFill, MaxDistanceLeavesFarCellsUnwritten) {
   punch_disc(r, 20, 20, 6);
   TilingParams tp;
   tp.tile_side = 129;  // halo 64, band 16: exact up to 46 cells
+  tp.always_tile = true;
   tp.max_distance = 10.0;
   tiled_fill(r.access(), FillParams{}, tp);
   const std::vector<double> dist = distance_to_valid(r.valid.data(), r.w, r.h);
@@ -392,6 +393,7 @@ TEST(TiledFill, MaxDistanceBeyondTheHaloUsesTheGuide) {
   punch_disc(r, 100, 75, 60);
   TilingParams tp;
   tp.tile_side = 33;  // halo 16, band 4: exact up to 12 cells in a window
+  tp.always_tile = true;
   tp.max_distance = 40.0;
   tiled_fill(r.access(), FillParams{}, tp);
   const std::vector<double> dist = distance_to_valid(r.valid.data(), r.w, r.h);
@@ -411,6 +413,7 @@ TEST(TiledFill, CancelStopsWithCancelled) {
   TilingParams tp;
   tp.tile_side = 33;
   tp.threads = 2;
+  tp.always_tile = true;
   int calls = 0;
   const ProgressFn stop = [&](double f) {
     ++calls;
@@ -430,6 +433,16 @@ TEST(TiledFill, CancelStopsWithCancelled) {
   tiled_fill(r.access(), FillParams{}, tp, watch);
   EXPECT_TRUE(monotone);
   EXPECT_EQ(last, 1.0);
+}
+
+// A small raster (one field per void, on 2 threads) stops too, writing nothing.
+TEST(TiledFill, CancelInTheSmallRasterPathWritesNothing) {
+  MemRaster r = make_raster(300, 300, 0.2);
+  TilingParams tp;
+  tp.threads = 2;
+  const ProgressFn stop = [](double f) { return f < 0.5; };
+  EXPECT_THROW(tiled_fill(r.access(), FillParams{}, tp, stop), Cancelled);
+  EXPECT_EQ(r.writes, 0u);
 }
 
 TEST(TiledFill, RejectsBadInput) {
