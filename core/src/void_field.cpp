@@ -8,6 +8,18 @@
 
 namespace mcmd::detail {
 
+int longest_void_run(const std::uint8_t* valid, int w, int h) {
+  int longest = 0;
+  for (int y = 0; y < h; ++y) {
+    const std::uint8_t* row = valid + static_cast<std::size_t>(y) * w;
+    for (int x = 0, run = 0; x < w; ++x) {
+      run = row[x] ? 0 : run + 1;
+      longest = std::max(longest, run);
+    }
+  }
+  return longest;
+}
+
 int void_field_margin(int extent) { return std::min(kVoidFieldMargin, 8 + 2 * extent) + extent; }
 
 Box void_field_rect(const Box& box, int width, int height) {
@@ -22,16 +34,24 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
   const int w = rect.width(), h = rect.height();
   const std::size_t cells = static_cast<std::size_t>(w) * h;
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - rect.y0) * w + (x - rect.x0); };
+  // Distances are needed for -md, deep pins and the far-void check; a field
+  // whose void runs are all short needs none of them (most small voids).
+  const double reach = (longest_void_run(valid, w, h) + 1) / 2.0;
+  const bool pinned = pins.guide && pins.guide->ready() && reach > pins.radius;
+  const bool need_dist = max_distance > 0 || pinned || far_void_tension(reach, 1) > 0;
   // Exact: a void cell's nearest known cell is next to its component.
-  const std::vector<double> dist = distance_to_valid(valid, w, h);
+  const std::vector<double> dist = need_dist ? distance_to_valid(valid, w, h) : std::vector<double>{};
   VoidFieldResult out;
-  for (const VoidRun& run : runs)
-    for (int x = run.x0; x < run.x1; ++x) out.farthest = std::max(out.farthest, dist[at(x, run.y)]);
+  out.farthest = reach;
+  if (need_dist) {
+    out.farthest = 0.0;
+    for (const VoidRun& run : runs)
+      for (int x = run.x0; x < run.x1; ++x) out.farthest = std::max(out.farthest, dist[at(x, run.y)]);
+  }
   if (far_void_tension(out.farthest, 1) > 0) return out;
 
   std::vector<double> z(z_in, z_in + cells);
   std::vector<CellState> state(cells);
-  const bool pinned = pins.guide && pins.guide->ready();
   for (std::size_t i = 0; i < cells; ++i) {
     state[i] = valid[i] ? CellState::known : CellState::unknown;
     if (pinned && dist[i] > pins.radius) {

@@ -22,6 +22,11 @@ constexpr int kVoidFieldMargin = 32;
 int void_field_margin(int extent);
 Box void_field_rect(const Box& box, int width, int height);
 
+// The longest run of void cells along a row of a w×h field. A void cell d
+// cells from data lies in a run of at least 2d - 1: half of it bounds every
+// distance to data.
+int longest_void_run(const std::uint8_t* valid, int w, int h);
+
 // Unknown cells farther than `radius` from data are pinned to `guide`
 // (none when guide is null or not ready).
 struct DeepPins {
