@@ -86,7 +86,7 @@ void relax_interior_run(Lattice& lat, std::size_t i0, int count, const double* r
     double b = rhs ? rhs[i0 + t] : 0.0;
     double inv = omega / diag;
     if (spring) {
-      b += spring[t] * target[t];
+      if (target) b += spring[t] * target[t];
       inv = omega / (diag + spring[t]);
     }
     // Everything but the left neighbour, which is on the chain: written so the
@@ -105,7 +105,7 @@ void relax_border_cell(Lattice& lat, const double* rhs, int x, int y, double ome
   const std::size_t i = lat.index(x, y);
   ThinPlateRow r = thin_plate_row(lat.z.data(), lat.w, lat.h, x, y, lat.tension);
   if (!lat.spring.empty()) {
-    r.az += lat.spring[i] * (lat.z[i] - lat.target[i]);
+    r.az += lat.spring[i] * (lat.z[i] - (lat.target.empty() ? 0.0 : lat.target[i]));
     r.diag += lat.spring[i];
   }
   if (r.diag > 0) lat.z[i] += omega * ((rhs ? rhs[i] : 0.0) - r.az) / r.diag;
@@ -154,7 +154,7 @@ double residual_at(const Lattice& lat, const double* rhs, int x, int y) {
   const bool inside = x >= 2 && y >= 2 && x <= lat.w - 3 && y <= lat.h - 3;
   double az = inside ? interior_az(lat.z.data(), lat.w, i, lat.tension)
                      : thin_plate_row(lat.z.data(), lat.w, lat.h, x, y, lat.tension).az;
-  if (!lat.spring.empty()) az += lat.spring[i] * (lat.z[i] - lat.target[i]);
+  if (!lat.spring.empty()) az += lat.spring[i] * (lat.z[i] - (lat.target.empty() ? 0.0 : lat.target[i]));
   return (rhs ? rhs[i] : 0.0) - az;
 }
 
@@ -175,8 +175,12 @@ void residual_run(const Lattice& lat, const double* rhs, const Span& sp, double*
       for (int k = 0; k < n; ++k) o[k] += rhs[i0 + k];
     if (!lat.spring.empty()) {
       const double* sp_ = lat.spring.data() + i0;
-      const double* tg = lat.target.data() + i0;
-      for (int k = 0; k < n; ++k) o[k] -= sp_[k] * (z[i0 + k] - tg[k]);
+      if (lat.target.empty()) {
+        for (int k = 0; k < n; ++k) o[k] -= sp_[k] * z[i0 + k];
+      } else {
+        const double* tg = lat.target.data() + i0;
+        for (int k = 0; k < n; ++k) o[k] -= sp_[k] * (z[i0 + k] - tg[k]);
+      }
     }
   }
   for (int x = std::max(b, a); x < sp.x1; ++x) out[x - sp.x0] = residual_at(lat, rhs, x, sp.y);

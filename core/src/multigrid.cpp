@@ -213,10 +213,7 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations) {
   work.pinned = finest.pinned;
   work.spans = finest.spans;
   work.z.assign(cells, 0.0);
-  if (!finest.spring.empty()) {  // the operator's soft data term; the error equation has target 0
-    work.spring = finest.spring;
-    work.target.assign(cells, 0.0);
-  }
+  if (!finest.spring.empty()) work.spring = finest.spring;  // the error equation's target is 0 (empty)
   std::vector<double> zv(cells, 0.0), p(cells, 0.0), q(cells, 0.0), r_old(cells, 0.0);
   // Only free cells are ever written (work.z stays 0 at pinned cells), so
   // every copy runs over the spans: the cost follows the unknown cells.

@@ -27,7 +27,7 @@ struct Lattice {
   // Optional soft data term Σ spring·(z - target)² added to the energy of the
   // free cells (empty: none). Pulls towards an estimate without pinning it.
   std::vector<double> spring;
-  std::vector<double> target;
+  std::vector<double> target;       // empty with springs: a target of 0
   // Tension: weight of the membrane term Σ over grid edges (z_i - z_j)² added
   // to the thin-plate energy, in this lattice's own units (a level of spacing
   // 2^k cells carries 4^k times the finest level's). 0: pure thin plate.
