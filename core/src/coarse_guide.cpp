@@ -99,10 +99,10 @@ double CoarseGuide::lattice_tension() const {
   return far_void_tension(farthest, stride_);
 }
 
-void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, const ProgressFn& progress) const {
+void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, double tension, const ProgressFn& progress) const {
   if (params.method != Method::mcmd) return fill(g, params, progress);
   ThinPlateSchedule schedule;
-  schedule.tension = lattice_tension();
+  schedule.tension = tension;
   thin_plate_fill_scheduled(g, params, schedule, progress);
 }
 
@@ -121,21 +121,23 @@ bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
   known_ = known;
   if (known_count == 0) return false;
   value_ = mean;
-  const bool smooth_default = params.method == Method::mcmd && !params.rs_auto && params.rs == 0;
-  if (known_count < value_.size() && smooth_default && lattice_tension() == 0) {
-    // The lattice as it is, no 2^m+1 padding (a 676×301 lattice padded to
-    // 1025² was 5× the work). Not under tension: across a void reaching the
-    // raster's edge, the mirror (a level surface there) is what stops a
-    // coast's slope, which a free edge under tension did not (2.2 km too high
-    // in HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains).
-    std::vector<CellState> state(value_.size());
-    for (std::size_t i = 0; i < state.size(); ++i) state[i] = known[i] ? CellState::known : CellState::unknown;
-    thin_plate_smooth(FieldView{cw_, ch_, value_.data(), state.data()}, ThinPlateSchedule{}, progress);
-  } else if (known_count < value_.size()) {
-    Grid g = mirror_padded_grid(mean.data(), known.data(), cw_, ch_, levels_to_cover(cw_, ch_));
-    fill_lattice(g, params, progress);
-    for (int j = 0; j < ch_; ++j)
-      for (int i = 0; i < cw_; ++i) value_[static_cast<std::size_t>(j) * cw_ + i] = g.z(i, j);
+  if (known_count < value_.size()) {
+    const double tension = params.method == Method::mcmd ? lattice_tension() : 0.0;
+    if (is_smooth_default(params) && tension == 0) {
+      // The lattice as it is, no 2^m+1 padding (a 676×301 lattice padded to
+      // 1025² was 5× the work). Not under tension: across a void reaching the
+      // raster's edge, the mirror (a level surface there) is what stops a
+      // coast's slope, which a free edge under tension did not (2.2 km too
+      // high in HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains).
+      std::vector<CellState> state(value_.size());
+      for (std::size_t i = 0; i < state.size(); ++i) state[i] = known[i] ? CellState::known : CellState::unknown;
+      thin_plate_smooth(FieldView{cw_, ch_, value_.data(), state.data()}, ThinPlateSchedule{}, progress);
+    } else {
+      Grid g = mirror_padded_grid(mean.data(), known.data(), cw_, ch_, levels_to_cover(cw_, ch_));
+      fill_lattice(g, params, tension, progress);
+      for (int j = 0; j < ch_; ++j)
+        for (int i = 0; i < cw_; ++i) value_[static_cast<std::size_t>(j) * cw_ + i] = g.z(i, j);
+    }
   }
   ready_ = true;
   return true;

@@ -5,6 +5,7 @@
 #include <exception>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "mcmd/coarse_guide.hpp"
@@ -16,9 +17,8 @@
 namespace mcmd::detail {
 
 bool single_field_applies(int width, int height, const FillParams& params, const TilingParams& tiling) {
-  const bool smooth_default = params.method == Method::mcmd && !params.rs_auto && params.rs == 0;
   const std::size_t cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  return smooth_default && !tiling.always_tile && cells <= kSingleFieldMaxCells;
+  return is_smooth_default(params) && !tiling.always_tile && cells <= kSingleFieldMaxCells;
 }
 
 namespace {
@@ -79,16 +79,17 @@ void prepare_guide(const Whole& r, const std::vector<Domain>& domains, const Fil
 // cascade's coarse levels), with it on the void's own surroundings.
 DomainResult solve_domain(const Whole& r, const Domain& d, const DeepGuide& dg, double max_distance,
                           const ProgressFn& progress, int threads) {
-  const int w = d.rect.width(), h = d.rect.height();
-  std::vector<double> z(static_cast<std::size_t>(w) * h);
-  std::vector<std::uint8_t> valid(z.size());
-  for (int y = 0; y < h; ++y) {
-    const std::size_t from = r.index(d.rect.x0, d.rect.y0 + y), to = static_cast<std::size_t>(y) * w;
-    std::copy_n(r.z.begin() + from, w, z.begin() + to);
-    std::copy_n(r.valid.begin() + from, w, valid.begin() + to);
+  std::vector<double> z;
+  std::vector<std::uint8_t> valid;
+  z.reserve(static_cast<std::size_t>(d.rect.width()) * d.rect.height());
+  valid.reserve(z.capacity());
+  for (int y = d.rect.y0; y <= d.rect.y1; ++y) {
+    const std::size_t from = r.index(d.rect.x0, y), to = from + d.rect.width();
+    z.insert(z.end(), r.z.begin() + from, r.z.begin() + to);
+    valid.insert(valid.end(), r.valid.begin() + from, r.valid.begin() + to);
   }
-  return solve_void_field(d.rect, d.runs, z.data(), valid.data(), DeepPins{&dg.guide, dg.radius}, max_distance,
-                          progress, threads);
+  return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), DeepPins{&dg.guide, dg.radius},
+                          max_distance, progress, threads);
 }
 
 // Solves every domain, on `threads` threads (the calling one included, which

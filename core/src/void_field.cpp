@@ -28,7 +28,7 @@ Box void_field_rect(const Box& box, int width, int height) {
              std::min(height - 1, box.y1 + m)};
 }
 
-VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, const double* z_in,
+VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
                                  const std::uint8_t* valid, const DeepPins& pins, double max_distance,
                                  const ProgressFn& progress, int threads) {
   const int w = rect.width(), h = rect.height();
@@ -50,7 +50,6 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
   }
   if (far_void_tension(out.farthest, 1) > 0) return out;
 
-  std::vector<double> z(z_in, z_in + cells);
   std::vector<CellState> state(cells);
   for (std::size_t i = 0; i < cells; ++i) {
     state[i] = valid[i] ? CellState::known : CellState::unknown;

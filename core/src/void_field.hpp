@@ -1,5 +1,5 @@
-// One void component solved in its own field (internal to the tiled fill;
-// docs/tiling.md, "Small rasters" and "Small voids"): the component's
+// One void component solved in its own field (internal to the small-raster
+// path, single_field.*; docs/tiling.md, "Small rasters"): the component's
 // bounding box grown by void_field_margin cells on every side, clipped to the
 // raster, filled by the smooth default method. Other voids inside the field are
 // solved with it but are not its output. The values depend on the field's
@@ -41,11 +41,12 @@ struct VoidFieldResult {
 };
 
 // Pre: z and valid hold the field `rect` (row-major, raster coordinates of
-// rect), which contains the component's runs and a known ring around them.
+// rect), which contains the component's runs and a known ring around them;
+// z is taken over as the solver's work array.
 // Post: when farthest > 128 cells (the coarse guide's tension is needed, see
 // far_void_tension) values is empty: the caller must fill it another way.
 // `threads` run the solver of a large field (same result for any count).
-VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, const double* z,
+VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
                                  const std::uint8_t* valid, const DeepPins& pins, double max_distance,
                                  const ProgressFn& progress = {}, int threads = 1);
 

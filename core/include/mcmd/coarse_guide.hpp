@@ -67,8 +67,8 @@ class CoarseGuide {
   double coarse_distance(long long x, long long y) const;
 
  private:
-  // Fill the lattice's unknown points (thin plate under tension for the default method).
-  void fill_lattice(Grid& g, const FillParams& params, const ProgressFn& progress) const;
+  // Fill the lattice's unknown points (thin plate under `tension` for the default method).
+  void fill_lattice(Grid& g, const FillParams& params, double tension, const ProgressFn& progress) const;
   // far_void_tension for this lattice's known points.
   double lattice_tension() const;
   int width_ = 1, height_ = 1, stride_ = 1, cw_ = 1, ch_ = 1;
