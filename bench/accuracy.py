@@ -115,8 +115,7 @@ def main(argv=None):
     a = parse_args(argv)
     t_start = time.time()
     work = a.work
-    for d in ("inputs", "out", "results"):
-        os.makedirs(os.path.join(work, d), exist_ok=True)
+    V.make_work_dirs(work)
 
     ok, msg = V.mcmd_status(a.mcmd)
     methods = list(a.methods)
@@ -127,9 +126,7 @@ def main(argv=None):
         log("WARNING: " + msg)
         if skipped:
             log("WARNING: not run: " + ", ".join(skipped))
-    # every result (GDAL's too) is keyed on the mcmd binary, so that a report
-    # always compares runs made in the same session with the same binary
-    run_key = f"mcmd-{V.binary_id(a.mcmd)} {V.gdal_id()}"
+    run_key = V.run_key(a.mcmd)
 
     cases = []   # (case_id, dem, kind, seed, input, truth or None)
     for dem in a.dems:
@@ -155,13 +152,7 @@ def main(argv=None):
         truth = V.read_raster(tp).data if tp else None
 
         def evaluate(out_path, removed=removed, truth=truth, inr=inr):
-            f = V.read_raster(out_path)
-            if truth is None:
-                r = V.completeness(removed, f.data, f.nodata)
-            else:
-                r = V.metrics(truth, f.data, removed, f.nodata)
-            r["known_exact"] = V.known_unchanged(inr.data, ~removed, f.data)
-            return r
+            return V.score_fill(out_path, inr, removed, truth)
 
         for m in methods:
             out = os.path.join(work, "out", f"{cid}__{m}.tif")

@@ -118,8 +118,7 @@ def main(argv=None):
     a = parse_args(argv)
     t_start = time.time()
     work = a.work
-    for d in ("inputs", "out", "results"):
-        os.makedirs(os.path.join(work, d), exist_ok=True)
+    V.make_work_dirs(work)
     os.makedirs(a.png_dir, exist_ok=True)
 
     ok, msg = V.mcmd_status(a.mcmd)
@@ -127,9 +126,7 @@ def main(argv=None):
     if not ok:
         log("WARNING: " + msg)
         runs = {k: v for k, v in runs.items() if v is None}
-    # every result (GDAL's too) is keyed on the mcmd binary, so that a report
-    # always compares runs made in the same session with the same binary
-    run_key = f"mcmd-{V.binary_id(a.mcmd)} {V.gdal_id()}"
+    run_key = V.run_key(a.mcmd)
 
     results = {}   # (cid, run) -> dict
     infos = {}
@@ -161,13 +158,7 @@ def main(argv=None):
 
         def evaluate(out_path, name, removed=removed, truth=truth, inr=inr, win=win, png=png,
                      cid=cid):
-            f = V.read_raster(out_path)
-            if truth is None:
-                r = V.completeness(removed, f.data, f.nodata)
-            else:
-                r = V.metrics(truth, f.data, removed, f.nodata)
-            r["known_exact"] = V.known_unchanged(inr.data, ~removed, f.data)
-            del f
+            r = V.score_fill(out_path, inr, removed, truth)
             r["md5"] = V.pixel_md5(out_path) if name.startswith("mcmd") else None
             if png and name in ("mcmd", "gdal-si2", "mcmd-tile257"):
                 hill(out_path, win, os.path.join(a.png_dir, f"{cid}__{name}"))

@@ -785,6 +785,27 @@ def known_unchanged(inp: np.ndarray, valid: np.ndarray, fill: np.ndarray) -> boo
     return bool(np.array_equal(a, b))
 
 
+def score_fill(out_path: str, inr: Raster, removed: np.ndarray, truth: np.ndarray | None) -> dict:
+    """The metrics of one fill over the removed cells (completeness only
+    without a truth), and whether every valid input cell stayed bit-exact."""
+    f = read_raster(out_path)
+    r = completeness(removed, f.data, f.nodata) if truth is None else metrics(truth, f.data, removed, f.nodata)
+    r["known_exact"] = known_unchanged(inr.data, ~removed, f.data)
+    return r
+
+
+def make_work_dirs(work: str):
+    """The inputs/, out/ and results/ folders of a benchmark's work folder."""
+    for d in ("inputs", "out", "results"):
+        os.makedirs(os.path.join(work, d), exist_ok=True)
+
+
+def run_key(mcmd: str) -> str:
+    """The cache key of every result, GDAL's too: a report then always
+    compares runs made in the same session with the same binary."""
+    return f"mcmd-{binary_id(mcmd)} {gdal_id()}"
+
+
 def log(*a):
     """Print and flush at once, so progress shows in long benchmark runs."""
     print(*a, flush=True)
