@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <utility>
@@ -51,33 +52,39 @@ std::vector<Domain> find_domains(const Whole& r) {
   return out;
 }
 
-// The coarse guide, when some component may hold a cell farther than the guide
-// radius from data. Its stride is the tiles' one, at least kMinGuideStride.
-struct DeepGuide {
-  double radius = 0.0;
-  CoarseGuide guide;
-  bool ready() const { return guide.ready(); }
-};
+// The coarse guide, built by the first field that has a cell farther than the
+// guide radius from data (none in most rasters: the 3 %-kept benchmark's
+// longest void runs exceed twice the radius, its distances never do). Its
+// stride is the tiles' one, at least kMinGuideStride. The guide depends on the
+// raster only: whichever field builds it, the pins are the same.
+class DeepGuide {
+ public:
+  DeepGuide(const Whole& r, const FillParams& params)
+      : r_(r), params_(params), stride_(std::max(kMinGuideStride, guide_stride(r.w, r.h))) {}
+  double radius() const { return kGuideRadiusStrides * stride_; }
+  int stride_if_built() const { return guide_.ready() ? stride_ : 0; }
+  const CoarseGuide* get() {
+    std::call_once(built_, [this] {
+      guide_ = CoarseGuide(r_.w, r_.h, stride_);
+      guide_.add_rows(0, r_.h, r_.z.data(), r_.valid.data());
+      guide_.solve(params_);
+    });
+    return &guide_;
+  }
 
-void prepare_guide(const Whole& r, const std::vector<Domain>& domains, const FillParams& params, DeepGuide& dg) {
-  const int stride = std::max(kMinGuideStride, guide_stride(r.w, r.h));
-  dg.radius = kGuideRadiusStrides * stride;
-  // A cell farther than the radius from data lies inside a run of more than
-  // twice the radius.
-  const bool deep = std::any_of(domains.begin(), domains.end(), [&](const Domain& d) {
-    return std::any_of(d.runs.begin(), d.runs.end(), [&](const VoidRun& run) { return run.x1 - run.x0 > 2 * dg.radius; });
-  });
-  if (!deep) return;
-  dg.guide = CoarseGuide(r.w, r.h, stride);
-  dg.guide.add_rows(0, r.h, r.z.data(), r.valid.data());
-  dg.guide.solve(params);
-}
+ private:
+  const Whole& r_;
+  const FillParams& params_;
+  int stride_;
+  std::once_flag built_;
+  CoarseGuide guide_;
+};
 
 // Solve one domain as a field (void_field.hpp). Deep inside large voids the
 // surface is the coarse guide's, as in tiles (docs/tiling.md): without it, the
 // fill of a large void depended on how much terrain its field held (the
 // cascade's coarse levels), with it on the void's own surroundings.
-DomainResult solve_domain(const Whole& r, const Domain& d, const DeepGuide& dg, double max_distance,
+DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, double max_distance,
                           const ProgressFn& progress, int threads) {
   std::vector<double> z;
   std::vector<std::uint8_t> valid;
@@ -88,13 +95,13 @@ DomainResult solve_domain(const Whole& r, const Domain& d, const DeepGuide& dg, 
     z.insert(z.end(), r.z.begin() + from, r.z.begin() + to);
     valid.insert(valid.end(), r.valid.begin() + from, r.valid.begin() + to);
   }
-  return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), DeepPins{&dg.guide, dg.radius},
+  return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), DeepPins{[&dg] { return dg.get(); }, dg.radius()},
                           max_distance, progress, threads);
 }
 
 // Solves every domain, on `threads` threads (the calling one included, which
 // alone reports progress). Each result depends on its domain only.
-std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain>& domains, const DeepGuide& dg,
+std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain>& domains, DeepGuide& dg,
                                         double max_distance, int threads, const ProgressFn& progress) {
   std::vector<DomainResult> results(domains.size());
   std::vector<std::exception_ptr> errors(domains.size());
@@ -163,12 +170,12 @@ bool fill_single_field(const RasterAccess& raster, const FillParams& params, con
   if (st.known_cells == 0) throw std::invalid_argument("the raster has no known cell to fill from");
 
   const std::vector<Domain> domains = find_domains(r);
-  DeepGuide dg;
-  prepare_guide(r, domains, params, dg);
+  DeepGuide dg(r, params);
   report(progress, 0.05);
   const std::vector<DomainResult> results = solve_domains(r, domains, dg, tiling.max_distance,
                                                           effective_threads(tiling.threads),
                                                           sub_progress(progress, 0.05, 0.95));
+  st.guide_stride = dg.stride_if_built();
   // A void reaching far from data needs the guide's tension at a coarse scale
   // and its surface deep inside (one field under tension, solved to the usual
   // tolerance, still carried a coast's slope 2 km up): leave it to the tiles.

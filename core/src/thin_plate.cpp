@@ -19,7 +19,8 @@
 //     cannot hold.
 //  3. Multigrid (multigrid.cpp): conjugate gradients preconditioned by a
 //     V-cycle at the finest level (constraint cells Dirichlet), to
-//     convergence, on the thin-plate energy plus a weak pull towards the
+//     convergence (a looser tolerance for large fields with no cell far from
+//     data), on the thin-plate energy plus a weak pull towards the
 //     cascade's fill: on large blob voids the plain converged thin plate
 //     extends the rim's slopes too far (docs/default-method.md).
 //  4. Roughness (roughness.cpp): with rs > 0 or rs auto, a constrained
@@ -40,6 +41,7 @@
 
 #include "mcmd/biharmonic_relax.hpp"
 #include "mcmd/cubic_prolong.hpp"
+#include "mcmd/distance.hpp"
 #include "mcmd/lattice.hpp"
 #include "mcmd/multigrid.hpp"
 #include "mcmd/pull_push.hpp"
@@ -177,6 +179,18 @@ void attach_pull(Lattice& lat, double pull_length) {
               lat.spring.begin() + static_cast<std::ptrdiff_t>(lat.index(sp.x1, sp.y)), stiffness);
 }
 
+// The PCG tolerance for this field: the looser shallow one when the field is
+// large and every free cell lies within shallow_reach of a constraint (one
+// distance transform, paid only by fields large enough to gain from it).
+double pcg_tolerance(const Lattice& finest, const ThinPlateSchedule& s) {
+  if (s.shallow_pcg_tol <= s.pcg_tol || finest.free_count() < s.shallow_min_free) return s.pcg_tol;
+  const std::vector<double> dist = distance_to_valid(finest.pinned.data(), finest.w, finest.h);
+  for (const Span& sp : finest.spans)
+    for (int x = sp.x0; x < sp.x1; ++x)
+      if (dist[finest.index(x, sp.y)] > s.shallow_reach) return s.pcg_tol;
+  return s.shallow_pcg_tol;
+}
+
 int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
   long long sweeps = s.finest_sweeps;
   for (int d = 0; d < depth_from_finest && sweeps < s.max_sweeps; ++d) sweeps *= 2;
@@ -222,7 +236,7 @@ void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule
   if (schedule.pull_length > 0) attach_pull(levels[finest], schedule.pull_length);
   Multigrid mg(levels[finest], schedule.vcycle);
   if (schedule.pcg_tol > 0) {
-    mg.solve_pcg(levels[finest], schedule.pcg_tol, schedule.pcg_max_iterations);
+    mg.solve_pcg(levels[finest], pcg_tolerance(levels[finest], schedule), schedule.pcg_max_iterations);
     report(progress, 0.8);
   } else {
     for (int c = 0; c < schedule.v_cycles; ++c) {

@@ -37,8 +37,8 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
   // Distances are needed for -md, deep pins and the far-void check; a field
   // whose void runs are all short needs none of them (most small voids).
   const double reach = (longest_void_run(valid, w, h) + 1) / 2.0;
-  const bool pinned = pins.guide && pins.guide->ready() && reach > pins.radius;
-  const bool need_dist = max_distance > 0 || pinned || far_void_tension(reach, 1) > 0;
+  const bool may_pin = pins.guide && reach > pins.radius;
+  const bool need_dist = max_distance > 0 || may_pin || far_void_tension(reach, 1) > 0;
   // Exact: a void cell's nearest known cell is next to its component.
   const std::vector<double> dist = need_dist ? distance_to_valid(valid, w, h) : std::vector<double>{};
   VoidFieldResult out;
@@ -49,12 +49,18 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
       for (int x = run.x0; x < run.x1; ++x) out.farthest = std::max(out.farthest, dist[at(x, run.y)]);
   }
   if (far_void_tension(out.farthest, 1) > 0) return out;
+  const CoarseGuide* guide = nullptr;
+  if (may_pin) {
+    const bool deep = std::any_of(dist.begin(), dist.end(), [&](double d) { return d > pins.radius; });
+    if (deep) guide = pins.guide();
+  }
+  const bool pinned = guide && guide->ready();
 
   std::vector<CellState> state(cells);
   for (std::size_t i = 0; i < cells; ++i) {
     state[i] = valid[i] ? CellState::known : CellState::unknown;
     if (pinned && dist[i] > pins.radius) {
-      z[i] = pins.guide->at(rect.x0 + static_cast<long long>(i % w), rect.y0 + static_cast<long long>(i / w));
+      z[i] = guide->at(rect.x0 + static_cast<long long>(i % w), rect.y0 + static_cast<long long>(i / w));
       state[i] = CellState::known;
     }
   }

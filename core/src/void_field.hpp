@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "mcmd/coarse_guide.hpp"
@@ -27,10 +28,11 @@ Box void_field_rect(const Box& box, int width, int height);
 // distance to data.
 int longest_void_run(const std::uint8_t* valid, int w, int h);
 
-// Unknown cells farther than `radius` from data are pinned to `guide`
-// (none when guide is null or not ready).
+// Unknown cells farther than `radius` from data are pinned to the guide that
+// `guide()` returns, called only by a field that has such a cell (it may build
+// the guide then; empty function or null result: no pins).
 struct DeepPins {
-  const CoarseGuide* guide = nullptr;
+  std::function<const CoarseGuide*()> guide;
   double radius = 0.0;
 };
 

@@ -596,6 +596,26 @@ TEST(TiledFill, SmallRasterSolvesEachVoidInItsOwnField) {
   EXPECT_TRUE(bit_identical(run(r, 0, 1), both));
 }
 
+// The coarse guide is built only when some void cell lies farther than its
+// radius (8·4 cells here) from data: not for a long thin void, whose row runs
+// are long but whose cells are all next to data; and the deep void's fill is
+// the same on any number of threads (whichever field builds the guide).
+TEST(TiledFill, SmallRasterBuildsTheGuideOnlyForDeepVoids) {
+  MemRaster r = terrain_raster(400, 300);
+  for (int x = 20; x < 380; ++x) r.valid[r.at(x, 40)] = 0;  // one row, 360 cells long
+  Recorded rec;
+  run(r, 0, 2, rec.hooks);
+  EXPECT_EQ(rec.stats.tile_side, 0);
+  EXPECT_EQ(rec.stats.guide_stride, 0);
+  punch_disc(r, 200, 180, 50);  // its centre is 50 cells from data
+  punch_disc(r, 60, 200, 8);
+  const std::vector<double> two = run(r, 0, 2, rec.hooks);
+  EXPECT_EQ(rec.stats.tile_side, 0);
+  EXPECT_EQ(rec.stats.guide_stride, 4);
+  EXPECT_TRUE(r.complete());
+  EXPECT_TRUE(bit_identical(run(r, 0, 1), two));
+}
+
 TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
   MemRaster r = terrain_raster(200, 120);
   punch_disc(r, 100, 60, 20);

@@ -51,7 +51,7 @@ struct TiledFillStats {
   int tiles_y = 0;
   std::size_t windows_solved = 0;  // tiles whose output region holds a void (of a large component)
   std::size_t small_components = 0;  // void components solved alone (docs/tiling.md)
-  int guide_stride = 0;            // 0: no guide (a single tile)
+  int guide_stride = 0;            // 0: no guide (a single tile, or no cell far enough from data)
   std::size_t known_cells = 0;
   std::size_t void_cells = 0;
   std::size_t cells_written = 0;
