@@ -218,7 +218,8 @@ void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
 
 // The source is read block by block and never held in memory: the output is
 // a streamed copy of it (or a work GeoTIFF copy) whose void cells are filled
-// in place, reading known cells and voids from the untouched source.
+// in place. An uncompressed GeoTIFF copy is read back by the fill (cheaper
+// than decoding a compressed source twice), and so is the work copy.
 void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   DatasetPtr src = open_raster(args.src, false, "raster");
   const std::vector<int> bands = select_bands(*src, args.bands);
@@ -230,9 +231,11 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   if (fill_output_directly(driver, co)) {
     DatasetPtr dst = create_copy(driver, out.path(), *src, co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
     dst = reopen_for_update(std::move(dst), out.path(), args.dst);
+    // The fill reads the copy (uncompressed, unlike most sources): it must be whole.
+    if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
     for (int b = 1; b <= src->GetRasterCount(); ++b) copy_band_info(*src->GetRasterBand(b), *dst->GetRasterBand(b));
     log.reset();
-    fill_bands(*dst, *src, bands, mask, args, ProgressSlice{progress, 0.1, 1.0});
+    fill_bands(*dst, *dst, bands, mask, args, ProgressSlice{progress, 0.1, 1.0});
     dst.reset();  // close: flushes the last blocks
   } else {
     GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
@@ -245,7 +248,8 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     tmp = reopen_for_update(std::move(tmp), work.path(), args.dst);
     for (int b = 1; b <= src->GetRasterCount(); ++b) copy_band_info(*src->GetRasterBand(b), *tmp->GetRasterBand(b));
     log.reset();
-    fill_bands(*tmp, *src, bands, mask, args, ProgressSlice{progress, 0.1, 0.85});
+    if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
+    fill_bands(*tmp, *tmp, bands, mask, args, ProgressSlice{progress, 0.1, 0.85});
     tmp->FlushCache();
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
     DatasetPtr dst = create_copy(driver, out.path(), *tmp, co.List(), log, ProgressSlice{progress, 0.85, 1.0}, args.dst);

@@ -65,6 +65,49 @@ TEST(CliModes, MaskFileMarksTheVoids) {
     }
 }
 
+// The source's own per-dataset mask (no nodata value) marks the voids, also
+// when the fill reads its values back from the uncompressed output copy, and
+// in a compressed output (through the work copy).
+TEST(CliModes, SourceMaskBandMarksTheVoids) {
+  TempDir dir;
+  RasterSpec spec;
+  spec.nodata = std::nullopt;
+  const std::string src = dir.file("src.tif");
+  make_raster(src, spec);
+  {
+    GDALDataset* ds = GDALDataset::Open(src.c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE);
+    ASSERT_NE(ds, nullptr);
+    ASSERT_EQ(ds->CreateMaskBand(GMF_PER_DATASET), CE_None);
+    std::vector<GByte> m(static_cast<std::size_t>(spec.width) * spec.height, 255);
+    for (int y = 0; y < spec.height; ++y)
+      for (int x = 0; x < spec.width; ++x)
+        if (is_test_void(x, y, spec.width, spec.height)) m[static_cast<std::size_t>(y) * spec.width + x] = 0;
+    ASSERT_EQ(ds->GetRasterBand(1)->GetMaskBand()->RasterIO(GF_Write, 0, 0, spec.width, spec.height, m.data(),
+                                                             spec.width, spec.height, GDT_Byte, 0, 0, nullptr),
+              CE_None);
+    GDALClose(ds);
+  }
+  const auto in = band_values(src);
+  for (const std::vector<std::string>& extra : {std::vector<std::string>{}, {"-co", "COMPRESS=DEFLATE"}}) {
+    const std::string dst = dir.file(extra.empty() ? "plain.tif" : "deflate.tif");
+    std::vector<std::string> args{"-q"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.push_back(src);
+    args.push_back(dst);
+    const RunResult r = run_cli(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto out = band_values(dst);
+    for (int y = 0; y < spec.height; ++y)
+      for (int x = 0; x < spec.width; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * spec.width + x;
+        if (is_test_void(x, y, spec.width, spec.height))
+          ASSERT_GT(out[i], 0.0) << dst << ": void not filled at " << x << "," << y;
+        else
+          ASSERT_EQ(out[i], in[i]);
+      }
+  }
+}
+
 TEST(CliModes, InPlaceFillsTheSource) {
   TempDir dir;
   const std::string src = dir.file("src.tif");
