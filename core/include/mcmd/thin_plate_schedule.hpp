@@ -33,7 +33,7 @@ struct ThinPlateSchedule {
   // 1 % (docs/default-method.md). 0: never.
   double shallow_pcg_tol = 0.1;
   double shallow_reach = 16.0;               // "near": at most this many cells from a constraint
-  std::size_t shallow_min_free = 1u << 16;   // "large": at least this many free cells
+  std::size_t shallow_min_free = 1u << 14;   // "large": at least this many free cells
   // Soft pull of the finest level's free cells towards the cascade's fill:
   // the finest-level energy gains Σ (z - cascade)² / pull_length⁴. Negligible
   // within pull_length cells of data (the thin plate's stiffness there is
