@@ -180,10 +180,12 @@ void attach_pull(Lattice& lat, double pull_length) {
 }
 
 // The PCG tolerance for this field: the looser shallow one when the field is
-// large and every free cell lies within shallow_reach of a constraint (one
-// distance transform, paid only by fields large enough to gain from it).
-double pcg_tolerance(const Lattice& finest, const ThinPlateSchedule& s) {
+// large and every free cell lies within shallow_reach of a constraint (the
+// caller's farthest distance, or one distance transform, paid only by fields
+// large enough to gain from it).
+double pcg_tolerance(const Lattice& finest, double farthest, const ThinPlateSchedule& s) {
   if (s.shallow_pcg_tol <= s.pcg_tol || finest.free_count() < s.shallow_min_free) return s.pcg_tol;
+  if (farthest >= 0) return farthest <= s.shallow_reach ? s.shallow_pcg_tol : s.pcg_tol;
   const std::vector<double> dist = distance_to_valid(finest.pinned.data(), finest.w, finest.h);
   for (const Span& sp : finest.spans)
     for (int x = sp.x0; x < sp.x1; ++x)
@@ -236,7 +238,8 @@ void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule
   if (schedule.pull_length > 0) attach_pull(levels[finest], schedule.pull_length);
   Multigrid mg(levels[finest], schedule.vcycle);
   if (schedule.pcg_tol > 0) {
-    mg.solve_pcg(levels[finest], pcg_tolerance(levels[finest], schedule), schedule.pcg_max_iterations);
+    const double tol = pcg_tolerance(levels[finest], field.farthest, schedule);
+    mg.solve_pcg(levels[finest], tol, schedule.pcg_max_iterations);
     report(progress, 0.8);
   } else {
     for (int c = 0; c < schedule.v_cycles; ++c) {

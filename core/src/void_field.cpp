@@ -66,7 +66,12 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
   }
   ThinPlateSchedule schedule;
   schedule.vcycle.threads = threads;
-  thin_plate_smooth(FieldView{w, h, z.data(), state.data()}, schedule, progress);
+  FieldView view{w, h, z.data(), state.data()};
+  if (need_dist && !pinned) {  // the distances are to the constraints: pass them on
+    view.farthest = 0.0;
+    for (std::size_t i = 0; i < cells; ++i) view.farthest = std::max(view.farthest, dist[i]);
+  }
+  thin_plate_smooth(view, schedule, progress);
   for (const VoidRun& run : runs)
     for (int x = run.x0; x < run.x1; ++x) {
       const std::size_t i = at(x, run.y);

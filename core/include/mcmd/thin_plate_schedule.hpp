@@ -51,6 +51,9 @@ struct FieldView {
   int h = 0;
   double* z = nullptr;
   const CellState* state = nullptr;
+  // The largest distance from an unknown cell to the nearest constraint cell,
+  // when the caller has it (< 0: the solver measures it when it needs it).
+  double farthest = -1.0;
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
   double& z_at(int x, int y) const { return z[index(x, y)]; }
   CellState state_at(int x, int y) const { return state[index(x, y)]; }

@@ -1,0 +1,40 @@
+// distance_to_valid against brute force: exact Euclidean distances on random
+// masks of odd shapes, and infinity where nothing is valid.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "mcmd/distance.hpp"
+
+namespace {
+
+double brute_force(const std::vector<std::uint8_t>& valid, int w, int h, int x, int y) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int v = 0; v < h; ++v)
+    for (int u = 0; u < w; ++u)
+      if (valid[static_cast<std::size_t>(v) * w + u]) best = std::min(best, std::hypot(u - x, v - y));
+  return best;
+}
+
+TEST(Distance, MatchesBruteForceExactly) {
+  std::mt19937 rng(7);
+  const int sizes[][2] = {{1, 1}, {1, 40}, {40, 1}, {17, 23}, {64, 31}};
+  for (const auto& s : sizes)
+    for (double density : {0.0, 0.01, 0.05, 0.3}) {
+      const int w = s[0], h = s[1];
+      std::vector<std::uint8_t> valid(static_cast<std::size_t>(w) * h);
+      std::bernoulli_distribution pick(density);
+      for (auto& v : valid) v = pick(rng) ? 1 : 0;
+      const std::vector<double> d = mcmd::distance_to_valid(valid.data(), w, h);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          ASSERT_EQ(d[static_cast<std::size_t>(y) * w + x], brute_force(valid, w, h, x, y))
+              << w << "x" << h << " density " << density << " at " << x << "," << y;
+    }
+}
+
+}  // namespace
