@@ -7,6 +7,9 @@ namespace mcmd {
 
 namespace {
 
+// The spring on free cell i (0: none).
+inline double spring_at(const Lattice& lat, std::size_t i) { return lat.spring.empty() ? lat.spring_all : lat.spring[i]; }
+
 // Interior cells (2 <= x <= w-3, 2 <= y <= h-3): every term fits, the 13-point stencil.
 inline double interior_az(const double* z, std::ptrdiff_t s, std::size_t i, double t) {
   const double* c = z + i;
@@ -81,13 +84,16 @@ void relax_interior_run(Lattice& lat, std::size_t i0, int count, const double* r
   const double* spring = lat.spring.empty() ? nullptr : lat.spring.data() + i0;
   const double* target = lat.target.empty() ? nullptr : lat.target.data() + i0;
   const double ten = lat.tension, diag = 20.0 + 4.0 * ten, near = 8.0 + ten;
+  const double all = lat.spring_all, inv_all = omega / (diag + all);
   double w2 = c[-2], w1 = c[-1];
   for (int t = 0; t < count; ++t, ++c) {
     double b = rhs ? rhs[i0 + t] : 0.0;
-    double inv = omega / diag;
+    double inv = inv_all;
     if (spring) {
       if (target) b += spring[t] * target[t];
       inv = omega / (diag + spring[t]);
+    } else if (target) {
+      b += all * target[t];
     }
     // Everything but the left neighbour, which is on the chain: written so the
     // chain is one multiply-add (the compiler may not reassociate).
@@ -104,9 +110,9 @@ void relax_interior_run(Lattice& lat, std::size_t i0, int count, const double* r
 void relax_border_cell(Lattice& lat, const double* rhs, int x, int y, double omega) {
   const std::size_t i = lat.index(x, y);
   ThinPlateRow r = thin_plate_row(lat.z.data(), lat.w, lat.h, x, y, lat.tension);
-  if (!lat.spring.empty()) {
-    r.az += lat.spring[i] * (lat.z[i] - (lat.target.empty() ? 0.0 : lat.target[i]));
-    r.diag += lat.spring[i];
+  if (const double k = spring_at(lat, i); k != 0.0) {
+    r.az += k * (lat.z[i] - (lat.target.empty() ? 0.0 : lat.target[i]));
+    r.diag += k;
   }
   if (r.diag > 0) lat.z[i] += omega * ((rhs ? rhs[i] : 0.0) - r.az) / r.diag;
 }
@@ -154,7 +160,7 @@ double residual_at(const Lattice& lat, const double* rhs, int x, int y) {
   const bool inside = x >= 2 && y >= 2 && x <= lat.w - 3 && y <= lat.h - 3;
   double az = inside ? interior_az(lat.z.data(), lat.w, i, lat.tension)
                      : thin_plate_row(lat.z.data(), lat.w, lat.h, x, y, lat.tension).az;
-  if (!lat.spring.empty()) az += lat.spring[i] * (lat.z[i] - (lat.target.empty() ? 0.0 : lat.target[i]));
+  if (const double k = spring_at(lat, i); k != 0.0) az += k * (lat.z[i] - (lat.target.empty() ? 0.0 : lat.target[i]));
   return (rhs ? rhs[i] : 0.0) - az;
 }
 
@@ -180,6 +186,13 @@ void residual_run(const Lattice& lat, const double* rhs, const Span& sp, double*
       } else {
         const double* tg = lat.target.data() + i0;
         for (int k = 0; k < n; ++k) o[k] -= sp_[k] * (z[i0 + k] - tg[k]);
+      }
+    } else if (const double all = lat.spring_all; all != 0.0) {
+      if (lat.target.empty()) {
+        for (int k = 0; k < n; ++k) o[k] -= all * z[i0 + k];
+      } else {
+        const double* tg = lat.target.data() + i0;
+        for (int k = 0; k < n; ++k) o[k] -= all * (z[i0 + k] - tg[k]);
       }
     }
   }

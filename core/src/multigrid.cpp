@@ -213,7 +213,9 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations) {
   work.pinned = finest.pinned;
   work.spans = finest.spans;
   work.z.assign(cells, 0.0);
-  if (!finest.spring.empty()) work.spring = finest.spring;  // the error equation's target is 0 (empty)
+  // The error equation has the same springs and a target of 0 (empty).
+  if (!finest.spring.empty()) work.spring = finest.spring;
+  work.spring_all = finest.spring_all;
   std::vector<double> zv(cells, 0.0), p(cells, 0.0), q(cells, 0.0), r_old(cells, 0.0);
   // Only free cells are ever written (work.z stays 0 at pinned cells), so
   // every copy runs over the spans: the cost follows the unknown cells.

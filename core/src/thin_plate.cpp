@@ -171,12 +171,9 @@ void attach_springs(Lattice& lat, const PullLevel& est, double strength) {
 
 // Springs of stiffness pull_length⁻⁴ from every free cell to its current value.
 void attach_pull(Lattice& lat, double pull_length) {
-  const double stiffness = 1.0 / std::pow(pull_length, 4.0);
-  lat.spring.assign(lat.z.size(), 0.0);
+  lat.spring.clear();
+  lat.spring_all = 1.0 / std::pow(pull_length, 4.0);
   lat.target = lat.z;
-  for (const Span& sp : lat.spans)
-    std::fill(lat.spring.begin() + static_cast<std::ptrdiff_t>(lat.index(sp.x0, sp.y)),
-              lat.spring.begin() + static_cast<std::ptrdiff_t>(lat.index(sp.x1, sp.y)), stiffness);
 }
 
 // The PCG tolerance for this field: the looser shallow one when the field is

@@ -28,6 +28,9 @@ struct Lattice {
   // free cells (empty: none). Pulls towards an estimate without pinning it.
   std::vector<double> spring;
   std::vector<double> target;       // empty with springs: a target of 0
+  // Or one spring of this stiffness on every free cell (with `spring` empty):
+  // the finest level's pull costs no array and no division per cell.
+  double spring_all = 0.0;
   // Tension: weight of the membrane term Σ over grid edges (z_i - z_j)² added
   // to the thin-plate energy, in this lattice's own units (a level of spacing
   // 2^k cells carries 4^k times the finest level's). 0: pure thin plate.
