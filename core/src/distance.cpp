@@ -73,4 +73,38 @@ std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h) {
   return sq;
 }
 
+bool all_within_chebyshev(const std::uint8_t* valid, int w, int h, int r) {
+  const std::size_t W = static_cast<std::size_t>(w);
+  const int cap = r + 1;  // "farther than r" is all that counts
+  // Vertical distance to the nearest valid cell, capped, by a downward and an
+  // upward scan over whole rows.
+  std::vector<int> g(W * static_cast<std::size_t>(h));
+  for (int y = 0; y < h; ++y) {
+    int* row = g.data() + y * W;
+    const int* above = y > 0 ? row - W : nullptr;
+    const std::uint8_t* ok = valid + y * W;
+    for (std::size_t x = 0; x < W; ++x) row[x] = ok[x] ? 0 : (above ? std::min(cap, above[x] + 1) : cap);
+  }
+  for (int y = h - 2; y >= 0; --y) {
+    int* row = g.data() + y * W;
+    for (std::size_t x = 0; x < W; ++x) row[x] = std::min(row[x], row[x + W] + 1);
+  }
+  // Along each row: the nearest column whose vertical distance is <= r.
+  std::vector<int> left(W);
+  for (int y = 0; y < h; ++y) {
+    const int* row = g.data() + y * W;
+    int last = -cap - 1;
+    for (int x = 0; x < w; ++x) {
+      if (row[x] <= r) last = x;
+      left[x] = x - last;
+    }
+    int next = w + cap;
+    for (int x = w - 1; x >= 0; --x) {
+      if (row[x] <= r) next = x;
+      if (std::min(left[x], next - x) > r) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace mcmd

@@ -2,6 +2,7 @@
 // masks of odd shapes, and infinity where nothing is valid.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -35,6 +36,35 @@ TEST(Distance, MatchesBruteForceExactly) {
           ASSERT_EQ(d[static_cast<std::size_t>(y) * w + x], brute_force(valid, w, h, x, y))
               << w << "x" << h << " density " << density << " at " << x << "," << y;
     }
+}
+
+// The Chebyshev bound agrees with brute force: true exactly when every cell
+// has a valid cell within r along both axes.
+TEST(Distance, ChebyshevBoundMatchesBruteForce) {
+  std::mt19937 rng(11);
+  const int sizes[][2] = {{1, 1}, {1, 30}, {30, 1}, {19, 13}, {40, 33}};
+  for (const auto& s : sizes)
+    for (double density : {0.0, 0.02, 0.1, 0.5})
+      for (int r : {0, 1, 2, 4, 7}) {
+        const int w = s[0], h = s[1];
+        std::vector<std::uint8_t> valid(static_cast<std::size_t>(w) * h);
+        std::bernoulli_distribution pick(density);
+        for (auto& v : valid) v = pick(rng) ? 1 : 0;
+        bool all = true;
+        for (int y = 0; y < h && all; ++y)
+          for (int x = 0; x < w && all; ++x) {
+            bool near = false;
+            for (int v = std::max(0, y - r); v <= std::min(h - 1, y + r) && !near; ++v)
+              for (int u = std::max(0, x - r); u <= std::min(w - 1, x + r); ++u)
+                if (valid[static_cast<std::size_t>(v) * w + u]) {
+                  near = true;
+                  break;
+                }
+            all = near;
+          }
+        EXPECT_EQ(mcmd::all_within_chebyshev(valid.data(), w, h, r), all)
+            << w << "x" << h << " density " << density << " r " << r;
+      }
 }
 
 }  // namespace

@@ -13,4 +13,10 @@ namespace mcmd {
 // Pre: w, h >= 1, valid holds w·h flags.
 std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h);
 
+// Whether every cell of the w×h raster has a valid cell within r along both
+// axes at once (Chebyshev distance <= r, so Euclidean <= r·√2): a cheap bound
+// (a few integer scans) that spares the transform where every cell is near
+// data, such as scattered samples. Pre: r >= 0, valid holds w·h flags.
+bool all_within_chebyshev(const std::uint8_t* valid, int w, int h, int r);
+
 }  // namespace mcmd

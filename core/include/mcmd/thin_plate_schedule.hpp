@@ -51,8 +51,10 @@ struct FieldView {
   int h = 0;
   double* z = nullptr;
   const CellState* state = nullptr;
-  // The largest distance from an unknown cell to the nearest constraint cell,
-  // when the caller has it (< 0: the solver measures it when it needs it).
+  // A bound on the distance from any unknown cell to the nearest constraint
+  // cell, when the caller has one (< 0: the solver measures it when it needs
+  // it). The field is taken as shallow when it is <= shallow_reach, as not
+  // shallow otherwise: a loose bound only costs speed.
   double farthest = -1.0;
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
   double& z_at(int x, int y) const { return z[index(x, y)]; }
