@@ -105,11 +105,19 @@ std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain
                                         double max_distance, int threads, const ProgressFn& progress) {
   std::vector<DomainResult> results(domains.size());
   std::vector<std::exception_ptr> errors(domains.size());
+  // Largest fields first, so that the last ones to finish are small ones.
+  std::vector<std::size_t> order(domains.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto area = [&](std::size_t k) {
+    return static_cast<long long>(domains[k].rect.width()) * domains[k].rect.height();
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return area(a) > area(b); });
   std::atomic<std::size_t> next{0}, done{0};
   std::atomic<bool> cancel{false};
   const ProgressFn worker_progress = [&cancel](double) { return !cancel.load(std::memory_order_relaxed); };
   const auto work = [&](bool main) {
-    for (std::size_t i; (i = next.fetch_add(1)) < domains.size();) {
+    for (std::size_t n; (n = next.fetch_add(1)) < domains.size();) {
+      const std::size_t i = order[n];
       try {
         // A lone domain is solved on the calling thread with the real progress
         // and every thread inside its solver.

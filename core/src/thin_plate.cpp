@@ -190,6 +190,45 @@ double pcg_tolerance(const Lattice& finest, double farthest, const ThinPlateSche
   return s.shallow_pcg_tol;
 }
 
+// The part of the finest lattice its solve touches: the free cells' bounding
+// box grown by the stencil's reach (2 cells), clipped. Every second difference
+// through a free cell fits inside it, so the solve there is the solve on the
+// whole field; the known cells beyond only fed the coarse levels. A void in a
+// wide field (its box plus margins, void_field.hpp) then costs what its box
+// costs at the finest level.
+struct FreeBox {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) × [y0, y1)
+  bool whole(const Lattice& lat) const { return x0 == 0 && y0 == 0 && x1 == lat.w && y1 == lat.h; }
+};
+
+FreeBox free_box(const Lattice& lat) {
+  constexpr int reach = 2;
+  FreeBox b{lat.w, lat.spans.front().y, 0, lat.spans.back().y + 1};
+  for (const Span& sp : lat.spans) {
+    b.x0 = std::min(b.x0, sp.x0);
+    b.x1 = std::max(b.x1, sp.x1);
+  }
+  return FreeBox{std::max(0, b.x0 - reach), std::max(0, b.y0 - reach), std::min(lat.w, b.x1 + reach),
+                 std::min(lat.h, b.y1 + reach)};
+}
+
+Lattice crop(const Lattice& lat, const FreeBox& b) {
+  Lattice sub;
+  sub.w = b.x1 - b.x0;
+  sub.h = b.y1 - b.y0;
+  sub.tension = lat.tension;
+  sub.z.reserve(static_cast<std::size_t>(sub.w) * sub.h);
+  sub.pinned.reserve(sub.z.capacity());
+  for (int y = b.y0; y < b.y1; ++y) {
+    const std::size_t from = lat.index(b.x0, y), to = lat.index(b.x1, y);
+    sub.z.insert(sub.z.end(), lat.z.begin() + from, lat.z.begin() + to);
+    sub.pinned.insert(sub.pinned.end(), lat.pinned.begin() + from, lat.pinned.begin() + to);
+  }
+  sub.spans.reserve(lat.spans.size());
+  for (const Span& sp : lat.spans) sub.spans.push_back(Span{sp.y - b.y0, sp.x0 - b.x0, sp.x1 - b.x0});
+  return sub;
+}
+
 int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
   long long sweeps = s.finest_sweeps;
   for (int d = 0; d < depth_from_finest && sweeps < s.max_sweeps; ++d) sweeps *= 2;
@@ -232,22 +271,27 @@ void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule
   // fill, solved to convergence (a well-posed problem; deep inside large
   // voids the pull keeps the coarse levels' estimate instead of extending
   // the rim's slopes, docs/default-method.md).
-  if (schedule.pull_length > 0) attach_pull(levels[finest], schedule.pull_length);
-  Multigrid mg(levels[finest], schedule.vcycle);
+  const FreeBox box = free_box(levels[finest]);
+  const bool whole = box.whole(levels[finest]);
+  Lattice cropped = whole ? Lattice{} : crop(levels[finest], box);
+  Lattice& fine = whole ? levels[finest] : cropped;
+  if (schedule.pull_length > 0) attach_pull(fine, schedule.pull_length);
+  Multigrid mg(fine, schedule.vcycle);
   if (schedule.pcg_tol > 0) {
-    const double tol = pcg_tolerance(levels[finest], field.farthest, schedule);
-    mg.solve_pcg(levels[finest], tol, schedule.pcg_max_iterations);
+    mg.solve_pcg(fine, pcg_tolerance(fine, field.farthest, schedule), schedule.pcg_max_iterations);
     report(progress, 0.8);
   } else {
     for (int c = 0; c < schedule.v_cycles; ++c) {
-      mg.v_cycle(levels[finest]);
+      mg.v_cycle(fine);
       report(progress, 0.4 + 0.4 * (c + 1) / schedule.v_cycles);
     }
   }
 
-  const Lattice& fill = levels[finest];
-  for (const Span& sp : fill.spans)
-    for (int x = sp.x0; x < sp.x1; ++x) field.z_at(x, sp.y) = fill.z[fill.index(x, sp.y)] + ref.at(x, sp.y);
+  for (const Span& sp : fine.spans)
+    for (int x = sp.x0; x < sp.x1; ++x) {
+      const int fx = x + box.x0, fy = sp.y + box.y0;  // box is the whole field when not cropped
+      field.z_at(fx, fy) = fine.z[fine.index(x, sp.y)] + ref.at(fx, fy);
+    }
   report(progress, 1.0);
 }
 

@@ -28,9 +28,14 @@ Box void_field_rect(const Box& box, int width, int height);
 // distance to data.
 int longest_void_run(const std::uint8_t* valid, int w, int h);
 
-// Unknown cells farther than `radius` from data are pinned to the guide that
-// `guide()` returns, called only by a field that has such a cell (it may build
-// the guide then; empty function or null result: no pins).
+// Other voids' cells in a field are pinned to the guide when they are at
+// least this many and at least as many as the component's own cells.
+constexpr std::size_t kPinOthersMin = 64;
+
+// Unknown cells farther than `radius` from data, and other voids' cells (see
+// kPinOthersMin), are pinned to the guide that `guide()` returns, called only
+// by a field that has such cells (it may build the guide then; empty function
+// or null result: no pins).
 struct DeepPins {
   std::function<const CoarseGuide*()> guide;
   double radius = 0.0;
