@@ -616,6 +616,23 @@ TEST(TiledFill, SmallRasterBuildsTheGuideOnlyForDeepVoids) {
   EXPECT_TRUE(bit_identical(run(r, 0, 1), two));
 }
 
+// A small void beside a larger one: the small void's field holds more of its
+// neighbour's cells than its own, so those are pinned to the coarse guide
+// (built although no cell is deep) instead of being solved a second time.
+TEST(TiledFill, NeighbourVoidCellsArePinnedNotSolvedTwice) {
+  MemRaster r = terrain_raster(300, 300);
+  punch_disc(r, 100, 150, 25);  // no cell farther than 25 from data
+  Recorded rec;
+  run(r, 0, 2, rec.hooks);
+  EXPECT_EQ(rec.stats.guide_stride, 0);
+  punch_disc(r, 135, 150, 3);   // its field reaches 29 cells into the first disc
+  const std::vector<double> two = run(r, 0, 2, rec.hooks);
+  EXPECT_EQ(rec.stats.tile_side, 0);
+  EXPECT_EQ(rec.stats.guide_stride, 4);
+  EXPECT_TRUE(r.complete());
+  EXPECT_TRUE(bit_identical(run(r, 0, 1), two));
+}
+
 TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
   MemRaster r = terrain_raster(200, 120);
   punch_disc(r, 100, 60, 20);
