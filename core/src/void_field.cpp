@@ -73,8 +73,11 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
   // does one whose every cell is near data by a cheaper bound (scattered
   // samples: 3 % kept cells have runs of 100+ cells but no cell 12 from data).
   double reach = (longest_void_run(valid, w, h) + 1) / 2.0;
+  // (Only where it can pay: a field large enough to be shallow, or one that
+  // would otherwise need the transform.)
+  const bool large = cells - static_cast<std::size_t>(std::count(valid, valid + cells, 1)) >= schedule.shallow_min_free;
   if (const int r = static_cast<int>(schedule.shallow_reach / std::sqrt(2.0));
-      reach > r * std::sqrt(2.0) && all_within_chebyshev(valid, w, h, r))
+      reach > r * std::sqrt(2.0) && (large || reach > pins.radius) && all_within_chebyshev(valid, w, h, r))
     reach = r * std::sqrt(2.0);
   const bool may_pin = pins.guide && reach > pins.radius;
   const bool need_dist = max_distance > 0 || may_pin || far_void_tension(reach, 1) > 0;
