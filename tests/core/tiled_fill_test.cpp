@@ -596,6 +596,17 @@ TEST(TiledFill, SmallRasterSolvesEachVoidInItsOwnField) {
   EXPECT_TRUE(bit_identical(run(r, 0, 1), both));
 }
 
+// Fills `r` without tiles on 2 threads and on 1, expecting a complete fill and
+// the same bits; returns the coarse guide's stride (0: not built).
+int small_raster_guide_stride(MemRaster& r) {
+  Recorded rec;
+  const std::vector<double> two = run(r, 0, 2, rec.hooks);
+  EXPECT_EQ(rec.stats.tile_side, 0);
+  EXPECT_TRUE(r.complete());
+  EXPECT_TRUE(bit_identical(run(r, 0, 1), two));
+  return rec.stats.guide_stride;
+}
+
 // The coarse guide is built only when some void cell lies farther than its
 // radius (8·4 cells here) from data: not for a long thin void, whose row runs
 // are long but whose cells are all next to data; and the deep void's fill is
@@ -603,17 +614,10 @@ TEST(TiledFill, SmallRasterSolvesEachVoidInItsOwnField) {
 TEST(TiledFill, SmallRasterBuildsTheGuideOnlyForDeepVoids) {
   MemRaster r = terrain_raster(400, 300);
   for (int x = 20; x < 380; ++x) r.valid[r.at(x, 40)] = 0;  // one row, 360 cells long
-  Recorded rec;
-  run(r, 0, 2, rec.hooks);
-  EXPECT_EQ(rec.stats.tile_side, 0);
-  EXPECT_EQ(rec.stats.guide_stride, 0);
+  EXPECT_EQ(small_raster_guide_stride(r), 0);
   punch_disc(r, 200, 180, 50);  // its centre is 50 cells from data
   punch_disc(r, 60, 200, 8);
-  const std::vector<double> two = run(r, 0, 2, rec.hooks);
-  EXPECT_EQ(rec.stats.tile_side, 0);
-  EXPECT_EQ(rec.stats.guide_stride, 4);
-  EXPECT_TRUE(r.complete());
-  EXPECT_TRUE(bit_identical(run(r, 0, 1), two));
+  EXPECT_EQ(small_raster_guide_stride(r), 4);
 }
 
 // A small void beside a larger one: the small void's field holds more of its
@@ -622,15 +626,9 @@ TEST(TiledFill, SmallRasterBuildsTheGuideOnlyForDeepVoids) {
 TEST(TiledFill, NeighbourVoidCellsArePinnedNotSolvedTwice) {
   MemRaster r = terrain_raster(300, 300);
   punch_disc(r, 100, 150, 25);  // no cell farther than 25 from data
-  Recorded rec;
-  run(r, 0, 2, rec.hooks);
-  EXPECT_EQ(rec.stats.guide_stride, 0);
+  EXPECT_EQ(small_raster_guide_stride(r), 0);
   punch_disc(r, 135, 150, 3);   // its field reaches 29 cells into the first disc
-  const std::vector<double> two = run(r, 0, 2, rec.hooks);
-  EXPECT_EQ(rec.stats.tile_side, 0);
-  EXPECT_EQ(rec.stats.guide_stride, 4);
-  EXPECT_TRUE(r.complete());
-  EXPECT_TRUE(bit_identical(run(r, 0, 1), two));
+  EXPECT_EQ(small_raster_guide_stride(r), 4);
 }
 
 TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
