@@ -5,6 +5,7 @@
 
 #include "mcmd/noise.hpp"
 #include "mcmd/thin_plate.hpp"
+#include "mcmd/thin_plate_schedule.hpp"
 
 namespace mcmd {
 
@@ -29,19 +30,19 @@ double smoothstep(double t) {
 }
 
 // Semivariogram at lag d over pairs of constraint cells along x and y.
-double semivariogram(const Grid& g, int d, std::size_t& pairs) {
+double semivariogram(const RoughField& g, int d, std::size_t& pairs) {
   double sum = 0.0;
   pairs = 0;
-  for (int y = 0; y < g.side(); ++y)
-    for (int x = 0; x < g.side(); ++x) {
-      if (!is_constraint(g.state(x, y))) continue;
-      if (x + d < g.side() && is_constraint(g.state(x + d, y))) {
-        const double dz = g.z(x + d, y) - g.z(x, y);
+  for (int y = 0; y < g.h; ++y)
+    for (int x = 0; x < g.w; ++x) {
+      if (!is_constraint(g.state_at(x, y))) continue;
+      if (x + d < g.w && is_constraint(g.state_at(x + d, y))) {
+        const double dz = g.z_at(x + d, y) - g.z_at(x, y);
         sum += dz * dz;
         ++pairs;
       }
-      if (y + d < g.side() && is_constraint(g.state(x, y + d))) {
-        const double dz = g.z(x, y + d) - g.z(x, y);
+      if (y + d < g.h && is_constraint(g.state_at(x, y + d))) {
+        const double dz = g.z_at(x, y + d) - g.z_at(x, y);
         sum += dz * dz;
         ++pairs;
       }
@@ -59,35 +60,36 @@ double catmull_rom(double p0, double p1, double p2, double p3, double t) {
 constexpr int kBlock = 32;
 
 struct Blocks {
-  int n = 0;             // blocks per side
+  int nx = 0, ny = 0;    // blocks per row, per column
   int ox = 0, oy = 0;    // local x + ox = position in the block lattice (cells); likewise y
   std::vector<std::uint8_t> active;  // noise is generated in these
   int bx(int x) const { return (x + ox) / kBlock; }
   int by(int y) const { return (y + oy) / kBlock; }
-  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * n + i; }
-  bool inside(int i, int j) const { return i >= 0 && j >= 0 && i < n && j < n; }
-  // Local cells [x0, x1) of block column i (rows likewise), clipped to the grid.
+  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * nx + i; }
+  bool inside(int i, int j) const { return i >= 0 && j >= 0 && i < nx && j < ny; }
+  // Local cells [x0, x1) of block column i (rows likewise), clipped to the field.
   int x0(int i) const { return std::max(0, i * kBlock - ox); }
-  int x1(int i, int side) const { return std::min(side, (i + 1) * kBlock - ox); }
+  int x1(int i, int w) const { return std::min(w, (i + 1) * kBlock - ox); }
   int y0(int j) const { return std::max(0, j * kBlock - oy); }
-  int y1(int j, int side) const { return std::min(side, (j + 1) * kBlock - oy); }
+  int y1(int j, int h) const { return std::min(h, (j + 1) * kBlock - oy); }
 };
 
 int positive_mod(long long v, int m) { return static_cast<int>(((v % m) + m) % m); }
 
 // Blocks holding an unknown cell, dilated by one block, are active.
-Blocks void_blocks(const Grid& g) {
+Blocks void_blocks(const RoughField& g) {
   Blocks b;
-  b.ox = positive_mod(g.origin_x(), kBlock);
-  b.oy = positive_mod(g.origin_y(), kBlock);
-  b.n = (g.side() + kBlock - 1) / kBlock + 1;
-  std::vector<std::uint8_t> has(static_cast<std::size_t>(b.n) * b.n, 0);
-  for (int y = 0; y < g.side(); ++y)
-    for (int x = 0; x < g.side(); ++x)
-      if (!is_constraint(g.state(x, y))) has[b.index(b.bx(x), b.by(y))] = 1;
+  b.ox = positive_mod(g.x0, kBlock);
+  b.oy = positive_mod(g.y0, kBlock);
+  b.nx = (g.w + kBlock - 1) / kBlock + 1;
+  b.ny = (g.h + kBlock - 1) / kBlock + 1;
+  std::vector<std::uint8_t> has(static_cast<std::size_t>(b.nx) * b.ny, 0);
+  for (int y = 0; y < g.h; ++y)
+    for (int x = 0; x < g.w; ++x)
+      if (!is_constraint(g.state_at(x, y))) has[b.index(b.bx(x), b.by(y))] = 1;
   b.active.assign(has.size(), 0);
-  for (int j = 0; j < b.n; ++j)
-    for (int i = 0; i < b.n; ++i) {
+  for (int j = 0; j < b.ny; ++j)
+    for (int i = 0; i < b.nx; ++i) {
       if (!has[b.index(i, j)]) continue;
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di)
@@ -99,7 +101,7 @@ Blocks void_blocks(const Grid& g) {
 // One octave: white noise on a rotated lattice of spacing 2^j, interpolated
 // with Catmull-Rom splines, added to `out` at the cells of active blocks. The
 // nodes are a function of global coordinates: any window sees the same field.
-void add_octave(const Grid& g, const Blocks& blocks, std::uint64_t seed, int j, double weight,
+void add_octave(const RoughField& g, const Blocks& blocks, std::uint64_t seed, int j, double weight,
                 std::vector<double>& out) {
   const double s = std::ldexp(1.0, j);
   const double c = std::cos(j * kGolden) / s, sn = std::sin(j * kGolden) / s;
@@ -109,13 +111,13 @@ void add_octave(const Grid& g, const Blocks& blocks, std::uint64_t seed, int j, 
     v = -sn * gx + c * gy + oy;
   };
   const std::uint64_t key = seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1);
-  const double gx0 = static_cast<double>(g.origin_x()), gy0 = static_cast<double>(g.origin_y());
+  const double gx0 = static_cast<double>(g.x0), gy0 = static_cast<double>(g.y0);
   std::vector<double> node;
-  for (int bj = 0; bj < blocks.n; ++bj)
-    for (int bi = 0; bi < blocks.n; ++bi) {
+  for (int bj = 0; bj < blocks.ny; ++bj)
+    for (int bi = 0; bi < blocks.nx; ++bi) {
       if (!blocks.active[blocks.index(bi, bj)]) continue;
-      const int x0 = blocks.x0(bi), x1 = blocks.x1(bi, g.side());
-      const int y0 = blocks.y0(bj), y1 = blocks.y1(bj, g.side());
+      const int x0 = blocks.x0(bi), x1 = blocks.x1(bi, g.w);
+      const int y0 = blocks.y0(bj), y1 = blocks.y1(bj, g.h);
       if (x1 <= x0 || y1 <= y0) continue;
       // Node box covering the block's corners in (u, v).
       double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300;
@@ -151,15 +153,15 @@ void add_octave(const Grid& g, const Blocks& blocks, std::uint64_t seed, int j, 
 
 // Variance of second differences along x and y over the cells of `z` whose
 // 3-cell stencils lie in active blocks (the noise is 0 elsewhere).
-double curvature_of(const std::vector<double>& z, int side, const Blocks& b) {
+double curvature_of(const std::vector<double>& z, int w, int h, const Blocks& b) {
   const auto on = [&](int x, int y) { return b.active[b.index(b.bx(x), b.by(y))] != 0; };
   double sum = 0.0;
   std::size_t n = 0;
-  for (int y = 1; y < side - 1; ++y)
-    for (int x = 1; x < side - 1; ++x) {
+  for (int y = 1; y < h - 1; ++y)
+    for (int x = 1; x < w - 1; ++x) {
       if (!on(x, y) || !on(x - 1, y) || !on(x + 1, y) || !on(x, y - 1) || !on(x, y + 1)) continue;
-      const std::size_t i = static_cast<std::size_t>(y) * side + x;
-      const double dxx = z[i - 1] - 2 * z[i] + z[i + 1], dyy = z[i - side] - 2 * z[i] + z[i + side];
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      const double dxx = z[i - 1] - 2 * z[i] + z[i + 1], dyy = z[i - w] - 2 * z[i] + z[i + w];
       sum += dxx * dxx + dyy * dyy;
       n += 2;
     }
@@ -201,23 +203,24 @@ struct LagSums {
 // Summed-area table of the per-block lag sums: any square neighbourhood in O(1).
 class LagTable {
  public:
-  LagTable(const Grid& g, const Blocks& b) : n_(b.n), sat_(static_cast<std::size_t>(b.n + 1) * (b.n + 1)) {
-    std::vector<LagSums> block(static_cast<std::size_t>(b.n) * b.n);
-    for (int y = 0; y < g.side(); ++y)
-      for (int x = 0; x < g.side(); ++x) {
-        if (!is_constraint(g.state(x, y))) continue;
+  LagTable(const RoughField& g, const Blocks& b)
+      : nx_(b.nx), ny_(b.ny), sat_(static_cast<std::size_t>(b.nx + 1) * (b.ny + 1)) {
+    std::vector<LagSums> block(static_cast<std::size_t>(b.nx) * b.ny);
+    for (int y = 0; y < g.h; ++y)
+      for (int x = 0; x < g.w; ++x) {
+        if (!is_constraint(g.state_at(x, y))) continue;
         LagSums& ls = block[b.index(b.bx(x), b.by(y))];
-        const double z = g.z(x, y);
+        const double z = g.z_at(x, y);
         for (int l = 0; l < kLags; ++l) {
           const int nx = x + kLagDx[l], ny = y + kLagDy[l];
-          if (!g.contains(nx, ny) || !is_constraint(g.state(nx, ny))) continue;
-          const double d = g.z(nx, ny) - z;
+          if (!g.contains(nx, ny) || !is_constraint(g.state_at(nx, ny))) continue;
+          const double d = g.z_at(nx, ny) - z;
           ls.sum[l] += d * d;
           ls.count[l] += 1;
         }
       }
-    for (int j = 0; j < n_; ++j)
-      for (int i = 0; i < n_; ++i) {
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i) {
         LagSums& s = sat_[at(i + 1, j + 1)];
         s = block[b.index(i, j)];
         s.add(sat_[at(i, j + 1)]);
@@ -228,7 +231,7 @@ class LagTable {
   // Sums over blocks [i0, i1] × [j0, j1], clipped to the lattice.
   LagSums box(int i0, int j0, int i1, int j1) const {
     i0 = std::max(i0, 0); j0 = std::max(j0, 0);
-    i1 = std::min(i1, n_ - 1); j1 = std::min(j1, n_ - 1);
+    i1 = std::min(i1, nx_ - 1); j1 = std::min(j1, ny_ - 1);
     LagSums s = sat_[at(i1 + 1, j1 + 1)];
     s.add(sat_[at(i0, j1 + 1)], -1.0);
     s.add(sat_[at(i1 + 1, j0)], -1.0);
@@ -237,8 +240,8 @@ class LagTable {
   }
 
  private:
-  std::size_t at(int i, int j) const { return static_cast<std::size_t>(j) * (n_ + 1) + i; }
-  int n_;
+  std::size_t at(int i, int j) const { return static_cast<std::size_t>(j) * (nx_ + 1) + i; }
+  int nx_, ny_;
   std::vector<LagSums> sat_;
 };
 
@@ -254,7 +257,7 @@ struct LapMoments {
 
 }  // namespace
 
-RoughnessModel estimate_roughness(const Grid& grid) {
+RoughnessModel estimate_roughness(const RoughField& grid) {
   RoughnessModel m;
   double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0, g1 = 0, g2 = 0;
   std::size_t pairs1 = 0;
@@ -283,16 +286,21 @@ RoughnessModel estimate_roughness(const Grid& grid) {
   return m;
 }
 
-std::vector<double> fractal_noise(const Grid& grid, std::uint64_t seed, double H, int octaves) {
-  std::vector<double> out(grid.cell_count(), 0.0);
+RoughnessModel estimate_roughness(const Grid& grid) { return estimate_roughness(RoughField::of(grid)); }
+
+std::vector<double> fractal_noise(const Grid& g, std::uint64_t seed, double H, int octaves) {
+  const RoughField grid = RoughField::of(g);
+  std::vector<double> out(grid.cells(), 0.0);
   Blocks all = void_blocks(grid);
   std::fill(all.active.begin(), all.active.end(), 1);
   for (int j = 0; j < octaves; ++j) add_octave(grid, all, seed, j, std::exp2(j * H), out);
   return out;
 }
 
-void add_roughness(Grid& grid, const FillParams& params) {
-  const int side = grid.side();
+void add_roughness(Grid& grid, const FillParams& params) { add_roughness(RoughField::of(grid), params); }
+
+void add_roughness(const RoughField& grid, const FillParams& params) {
+  const int w = grid.w, h = grid.h;
   double H = params.H;
   RoughnessModel global;
   if (params.rs_auto) {
@@ -304,33 +312,30 @@ void add_roughness(Grid& grid, const FillParams& params) {
   }
   // Unconditioned noise on the blocks near voids only (0 elsewhere).
   const Blocks blocks = void_blocks(grid);
-  std::vector<double> noise(grid.cell_count(), 0.0);
+  std::vector<double> noise(grid.cells(), 0.0);
   for (int j = 0; j < kOctaves; ++j) add_octave(grid, blocks, params.seed, j, std::exp2(j * H), noise);
   // Global calibration: the noise's second-difference variance is kStrength²
   // of the terrain's (rs auto), or the coarsest octave has amplitude rs · unit.
   double global_scale = 0.0;
   if (params.rs_auto) {
-    const double c = curvature_of(noise, side, blocks);
+    const double c = curvature_of(noise, w, h, blocks);
     global_scale = c > 0 ? kStrength * std::sqrt(global.curvature / c) : 0.0;
   } else {
-    const double unit = params.noise_unit > 0 ? params.noise_unit : known_range(grid);
+    const double unit = params.noise_unit > 0 ? params.noise_unit
+                                              : known_range({grid.z, grid.cells()}, {grid.state, grid.cells()});
     global_scale = params.rs * unit * std::exp2(-(kOctaves - 1) * H);
   }
   // Condition on the constraints: subtract the smooth fill of the noise's own
   // constraint values, so the correction is 0 there and grows into the voids.
   {
-    Grid cond = grid;
-    for (std::size_t i = 0; i < cond.cell_count(); ++i) cond.elevations()[i] = noise[i];
-    FillParams smooth = params;
-    smooth.rs = 0.0;
-    smooth.rs_auto = false;
-    thin_plate_fill(cond, smooth);
-    for (std::size_t i = 0; i < grid.cell_count(); ++i)
-      noise[i] = is_constraint(grid.states()[i]) ? 0.0 : noise[i] - cond.elevations()[i];
+    std::vector<double> cond = noise;
+    thin_plate_smooth(FieldView{w, h, cond.data(), grid.state}, ThinPlateSchedule{});
+    for (std::size_t i = 0; i < grid.cells(); ++i)
+      noise[i] = is_constraint(grid.state[i]) ? 0.0 : noise[i] - cond[i];
   }
   if (!params.rs_auto) {
-    for (std::size_t i = 0; i < grid.cell_count(); ++i)
-      if (!is_constraint(grid.states()[i])) grid.elevations()[i] += global_scale * noise[i];
+    for (std::size_t i = 0; i < grid.cells(); ++i)
+      if (!is_constraint(grid.state[i])) grid.z[i] += global_scale * noise[i];
     return;
   }
 
@@ -342,23 +347,23 @@ void add_roughness(Grid& grid, const FillParams& params) {
   // within kMaxRadius blocks (scattered samples, the middle of huge voids),
   // the scale blends into the global one. Scales are interpolated bilinearly
   // between block centres: a smooth amplitude field.
-  const int nb = blocks.n;
+  const int nbx = blocks.nx, nby = blocks.ny;
   const LagTable lags(grid, blocks);
   const double global_target = kLapPerCurvature * 2.0 * global.curvature;
-  std::vector<LapMoments> lap(static_cast<std::size_t>(nb) * nb);
-  const double* z = grid.elevations().data();
-  for (int y = 1; y < side - 1; ++y)
-    for (int x = 1; x < side - 1; ++x) {
-      if (is_constraint(grid.state(x, y))) continue;
+  std::vector<LapMoments> lap(static_cast<std::size_t>(nbx) * nby);
+  const double* z = grid.z;
+  for (int y = 1; y < h - 1; ++y)
+    for (int x = 1; x < w - 1; ++x) {
+      if (is_constraint(grid.state_at(x, y))) continue;
       const std::size_t i = grid.index(x, y);
-      const double lf = z[i - 1] + z[i + 1] + z[i - side] + z[i + side] - 4.0 * z[i];
-      const double lq = noise[i - 1] + noise[i + 1] + noise[i - side] + noise[i + side] - 4.0 * noise[i];
+      const double lf = z[i - 1] + z[i + 1] + z[i - w] + z[i + w] - 4.0 * z[i];
+      const double lq = noise[i - 1] + noise[i + 1] + noise[i - w] + noise[i + w] - 4.0 * noise[i];
       LapMoments& m = lap[blocks.index(blocks.bx(x), blocks.by(y))];
       m.n += 1; m.f += lf; m.ff += lf * lf; m.q += lq; m.qq += lq * lq;
     }
-  std::vector<double> scale(static_cast<std::size_t>(nb) * nb, -1.0);
-  for (int bj = 0; bj < nb; ++bj)
-    for (int bi = 0; bi < nb; ++bi) {
+  std::vector<double> scale(static_cast<std::size_t>(nbx) * nby, -1.0);
+  for (int bj = 0; bj < nby; ++bj)
+    for (int bi = 0; bi < nbx; ++bi) {
       if (lap[blocks.index(bi, bj)].n == 0) continue;
       LagSums around;
       for (int r = 1; r <= kMaxRadius; ++r) {
@@ -378,8 +383,8 @@ void add_roughness(Grid& grid, const FillParams& params) {
   // Blocks without unknown cells take the mean of their neighbours with one
   // (they only support the interpolation).
   std::vector<double> filled = scale;
-  for (int bj = 0; bj < nb; ++bj)
-    for (int bi = 0; bi < nb; ++bi) {
+  for (int bj = 0; bj < nby; ++bj)
+    for (int bi = 0; bi < nbx; ++bi) {
       if (scale[blocks.index(bi, bj)] >= 0) continue;
       double s = 0, n = 0;
       for (int dj = -1; dj <= 1; ++dj)
@@ -391,20 +396,20 @@ void add_roughness(Grid& grid, const FillParams& params) {
       filled[blocks.index(bi, bj)] = n > 0 ? s / n : global_scale;
     }
   const auto at = [&](int bi, int bj) {
-    return filled[blocks.index(std::clamp(bi, 0, nb - 1), std::clamp(bj, 0, nb - 1))];
+    return filled[blocks.index(std::clamp(bi, 0, nbx - 1), std::clamp(bj, 0, nby - 1))];
   };
-  for (int y = 0; y < side; ++y) {
+  for (int y = 0; y < h; ++y) {
     const double fy = (y + blocks.oy + 0.5) / kBlock - 0.5;
     const int bj = static_cast<int>(std::floor(fy));
     const double ty = fy - bj;
-    for (int x = 0; x < side; ++x) {
-      if (is_constraint(grid.state(x, y))) continue;
+    for (int x = 0; x < w; ++x) {
+      if (is_constraint(grid.state_at(x, y))) continue;
       const double fx = (x + blocks.ox + 0.5) / kBlock - 0.5;
       const int bi = static_cast<int>(std::floor(fx));
       const double tx = fx - bi;
       const double a = (1 - ty) * ((1 - tx) * at(bi, bj) + tx * at(bi + 1, bj)) +
                        ty * ((1 - tx) * at(bi, bj + 1) + tx * at(bi + 1, bj + 1));
-      grid.z(x, y) += a * noise[grid.index(x, y)];
+      grid.z[grid.index(x, y)] += a * noise[grid.index(x, y)];
     }
   }
 }

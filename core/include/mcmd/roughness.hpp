@@ -11,6 +11,26 @@
 
 namespace mcmd {
 
+// A w×h part of a raster (row-major) whose cell (0, 0) is raster cell (x0, y0):
+// the noise is keyed on raster coordinates, so any window or field of a
+// raster sees the same noise. Unknown cells are the non-constraint ones.
+struct RoughField {
+  int w = 0, h = 0;
+  long long x0 = 0, y0 = 0;
+  double* z = nullptr;                // written by add_roughness only
+  const CellState* state = nullptr;
+  std::size_t cells() const { return static_cast<std::size_t>(w) * static_cast<std::size_t>(h); }
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
+  bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < w && y < h; }
+  double z_at(int x, int y) const { return z[index(x, y)]; }
+  CellState state_at(int x, int y) const { return state[index(x, y)]; }
+  // A grid as a field (read-only use when the grid is const).
+  static RoughField of(const Grid& g) {
+    return RoughField{g.side(), g.side(), g.origin_x(), g.origin_y(), const_cast<double*>(g.elevations().data()),
+                      g.states().data()};
+  }
+};
+
 // Terrain statistics from the constraint cells: semivariogram γ(d) over
 // horizontal and vertical pairs of constraint cells at lags 1, 2, 4, 8, 16.
 struct RoughnessModel {
@@ -20,6 +40,7 @@ struct RoughnessModel {
   bool valid = false;     // enough pairs to estimate
 };
 RoughnessModel estimate_roughness(const Grid& grid);
+RoughnessModel estimate_roughness(const RoughField& field);
 
 // Unconditioned fractal noise at every cell: octaves of spacing 2^j
 // (j = 0 .. octaves-1), each white noise on a lattice rotated by j golden
@@ -39,5 +60,7 @@ std::vector<double> fractal_noise(const Grid& grid, std::uint64_t seed, double H
 // 4 blocks. Else rs > 0: amplitude
 // rs · noise_unit for the coarsest octave, H = params.H. No-op otherwise.
 void add_roughness(Grid& grid, const FillParams& params);
+// The same on a field of any size (single_field.cpp's voids).
+void add_roughness(const RoughField& field, const FillParams& params);
 
 }  // namespace mcmd
