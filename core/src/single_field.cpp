@@ -19,7 +19,7 @@ namespace mcmd::detail {
 
 bool single_field_applies(int width, int height, const FillParams& params, const TilingParams& tiling) {
   const std::size_t cells = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  return is_smooth_default(params) && !tiling.always_tile && cells <= kSingleFieldMaxCells;
+  return params.method == Method::mcmd && !tiling.always_tile && cells <= kSingleFieldMaxCells;
 }
 
 namespace {
@@ -84,8 +84,8 @@ class DeepGuide {
 // surface is the coarse guide's, as in tiles (docs/tiling.md): without it, the
 // fill of a large void depended on how much terrain its field held (the
 // cascade's coarse levels), with it on the void's own surroundings.
-DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, double max_distance,
-                          const ProgressFn& progress, int threads) {
+DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, const FillParams& params,
+                          double max_distance, const ProgressFn& progress, int threads) {
   std::vector<double> z;
   std::vector<std::uint8_t> valid;
   z.reserve(static_cast<std::size_t>(d.rect.width()) * d.rect.height());
@@ -96,13 +96,14 @@ DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, double
     valid.insert(valid.end(), r.valid.begin() + from, r.valid.begin() + to);
   }
   return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), DeepPins{[&dg] { return dg.get(); }, dg.radius()},
-                          max_distance, progress, threads);
+                          params, max_distance, progress, threads);
 }
 
 // Solves every domain, on `threads` threads (the calling one included, which
 // alone reports progress). Each result depends on its domain only.
 std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain>& domains, DeepGuide& dg,
-                                        double max_distance, int threads, const ProgressFn& progress) {
+                                        const FillParams& params, double max_distance, int threads,
+                                        const ProgressFn& progress) {
   std::vector<DomainResult> results(domains.size());
   std::vector<std::exception_ptr> errors(domains.size());
   // Largest fields first, so that the last ones to finish are small ones.
@@ -123,7 +124,7 @@ std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain
         // and every thread inside its solver.
         const bool lone = domains.size() == 1;
         const ProgressFn& p = main && lone ? progress : worker_progress;
-        results[i] = solve_domain(r, domains[i], dg, max_distance, p, lone ? threads : 1);
+        results[i] = solve_domain(r, domains[i], dg, params, max_distance, p, lone ? threads : 1);
       } catch (...) {
         errors[i] = std::current_exception();
         cancel = true;
@@ -177,10 +178,23 @@ bool fill_single_field(const RasterAccess& raster, const FillParams& params, con
   }
   if (st.known_cells == 0) throw std::invalid_argument("the raster has no known cell to fill from");
 
+  // One noise unit for every field, as for every window of a tiled fill.
+  FillParams p = params;
+  if (p.noise_unit <= 0) {
+    double lo = 0, hi = 0;
+    bool any = false;
+    for (std::size_t i = 0; i < cells; ++i)
+      if (r.valid[i]) {
+        lo = any ? std::min(lo, r.z[i]) : r.z[i];
+        hi = any ? std::max(hi, r.z[i]) : r.z[i];
+        any = true;
+      }
+    p.noise_unit = hi - lo;
+  }
   const std::vector<Domain> domains = find_domains(r);
-  DeepGuide dg(r, params);
+  DeepGuide dg(r, p);
   report(progress, 0.05);
-  const std::vector<DomainResult> results = solve_domains(r, domains, dg, tiling.max_distance,
+  const std::vector<DomainResult> results = solve_domains(r, domains, dg, p, tiling.max_distance,
                                                           effective_threads(tiling.threads),
                                                           sub_progress(progress, 0.05, 0.95));
   st.guide_stride = dg.stride_if_built();

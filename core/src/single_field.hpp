@@ -15,9 +15,9 @@ namespace mcmd::detail {
 // the peak of the tiled fill on large rasters.
 constexpr std::size_t kSingleFieldMaxCells = std::size_t{1} << 21;
 
-// The default smooth method, tiles not forced (TilingParams::always_tile) and
-// a raster of at most kSingleFieldMaxCells cells. The tile size plays no part:
-// it is the size used when tiling.
+// The default method (smooth or with roughness: rs, rs auto), tiles not forced
+// (TilingParams::always_tile) and a raster of at most kSingleFieldMaxCells
+// cells. The tile size plays no part: it is the size used when tiling.
 bool single_field_applies(int width, int height, const FillParams& params, const TilingParams& tiling);
 
 // Each void component is solved in its own field (void_field.hpp).

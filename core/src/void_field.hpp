@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mcmd/coarse_guide.hpp"
+#include "mcmd/fill.hpp"
 #include "mcmd/progress.hpp"
 #include "void_components.hpp"
 
@@ -54,7 +55,7 @@ struct VoidFieldResult {
 // far_void_tension) values is empty: the caller must fill it another way.
 // `threads` run the solver of a large field (same result for any count).
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
-                                 const std::uint8_t* valid, const DeepPins& pins, double max_distance,
-                                 const ProgressFn& progress = {}, int threads = 1);
+                                 const std::uint8_t* valid, const DeepPins& pins, const FillParams& params,
+                                 double max_distance, const ProgressFn& progress = {}, int threads = 1);
 
 }  // namespace mcmd::detail

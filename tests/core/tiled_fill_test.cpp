@@ -644,10 +644,12 @@ TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
   }
 }
 
-// Tiles are still used when asked for (-tile), for rough fills, for rasters
-// beyond the size limit, and for voids reaching far from data (the guide's
-// tension and deep-void surface; see HugeVoidDoesNotExtrapolate...).
-TEST(TiledFill, TilesWhenAskedForRoughOrFarReachingVoids) {
+// Tiles are still used when asked for (-tile with TILING=ALWAYS), for the
+// paper methods, for rasters beyond the size limit, and for voids reaching far
+// from data (the guide's tension and deep-void surface; see
+// HugeVoidDoesNotExtrapolate...). Rough fills (rs auto) of small rasters are
+// fields too: the same bits on any number of threads, other bits per seed.
+TEST(TiledFill, TilesWhenAskedForPaperOrFarReachingVoids) {
   MemRaster r = terrain_raster(300, 300);
   punch_disc(r, 150, 150, 20);
   Recorded rec;
@@ -656,10 +658,25 @@ TEST(TiledFill, TilesWhenAskedForRoughOrFarReachingVoids) {
   run(r, 65, 2, hooks);
   EXPECT_EQ(stats.tile_side, 65);
   TilingParams tp;
+  FillParams paper;
+  paper.method = Method::paper_ds;
+  tiled_fill(r.access(), paper, tp, {}, hooks);
+  EXPECT_GT(stats.tile_side, 0);
+
   FillParams rough;
   rough.rs_auto = true;
+  tp.threads = 2;
   tiled_fill(r.access(), rough, tp, {}, hooks);
-  EXPECT_GT(stats.tile_side, 0);
+  EXPECT_EQ(stats.tile_side, 0);
+  EXPECT_TRUE(r.complete());
+  const std::vector<double> two = r.out;
+  tp.threads = 1;
+  tiled_fill(r.access(), rough, tp);
+  EXPECT_TRUE(bit_identical(r.out, two));
+  rough.seed = 7;
+  tiled_fill(r.access(), rough, tp);
+  EXPECT_FALSE(bit_identical(r.out, two));
+
   punch_disc(r, 150, 150, 140);  // a void cell 140 cells from data
   run(r, 0, 2, hooks);
   EXPECT_GT(stats.tile_side, 0);

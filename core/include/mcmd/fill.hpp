@@ -45,8 +45,8 @@ const StateShape& shape_for(const FillParams& params, CellState s);
 // The scheme a paper method uses. Pre: method is paper_ds or paper_te.
 Scheme scheme_of(Method method);
 
-// The default method without roughness: the smooth thin plate, which works on
-// fields of any size (thin_plate_smooth) and has no per-window noise.
+// The default method without roughness: the smooth thin plate (the coarse
+// guide's lattice is then filled as a field of any size).
 inline bool is_smooth_default(const FillParams& p) { return p.method == Method::mcmd && !p.rs_auto && p.rs == 0; }
 
 // Fill every unknown cell of `grid` with `params.method`.
