@@ -299,7 +299,7 @@ std::vector<double> fractal_noise(const Grid& g, std::uint64_t seed, double H, i
 
 void add_roughness(Grid& grid, const FillParams& params) { add_roughness(RoughField::of(grid), params); }
 
-void add_roughness(const RoughField& grid, const FillParams& params) {
+void add_roughness(const RoughField& grid, const FillParams& params, int threads) {
   const int w = grid.w, h = grid.h;
   double H = params.H;
   RoughnessModel global;
@@ -329,7 +329,9 @@ void add_roughness(const RoughField& grid, const FillParams& params) {
   // constraint values, so the correction is 0 there and grows into the voids.
   {
     std::vector<double> cond = noise;
-    thin_plate_smooth(FieldView{w, h, cond.data(), grid.state}, ThinPlateSchedule{});
+    ThinPlateSchedule schedule;
+    schedule.vcycle.threads = threads;
+    thin_plate_smooth(FieldView{w, h, cond.data(), grid.state}, schedule);
     for (std::size_t i = 0; i < grid.cells(); ++i)
       noise[i] = is_constraint(grid.state[i]) ? 0.0 : noise[i] - cond[i];
   }

@@ -119,7 +119,7 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
   thin_plate_smooth(view, schedule, rough ? sub_progress(progress, 0.0, 0.8) : progress);
   // Roughness on the smooth fill, keyed on raster coordinates (roughness.hpp);
   // its statistics come from the field: the void and its margin.
-  if (rough) add_roughness(RoughField{w, h, rect.x0, rect.y0, z.data(), state.data()}, params);
+  if (rough) add_roughness(RoughField{w, h, rect.x0, rect.y0, z.data(), state.data()}, params, threads);
   for (const VoidRun& run : runs)
     for (int x = run.x0; x < run.x1; ++x) {
       const std::size_t i = at(x, run.y);

@@ -60,7 +60,8 @@ std::vector<double> fractal_noise(const Grid& grid, std::uint64_t seed, double H
 // 4 blocks. Else rs > 0: amplitude
 // rs · noise_unit for the coarsest octave, H = params.H. No-op otherwise.
 void add_roughness(Grid& grid, const FillParams& params);
-// The same on a field of any size (single_field.cpp's voids).
-void add_roughness(const RoughField& field, const FillParams& params);
+// The same on a field of any size (single_field.cpp's voids); `threads` run
+// the conditioning solve of a large field (same result for any count).
+void add_roughness(const RoughField& field, const FillParams& params, int threads = 1);
 
 }  // namespace mcmd
