@@ -73,9 +73,10 @@ Shape of the fill (what it does to the terrain):
                    (seed, cell position), not on tiling or threads.
   -o NAME=VALUE    Any other MCMDFillNodata option, e.g. -o RIDGE_I=2.
 
-Performance (a band of up to 2^21 cells is filled whole, one field per void;
-a larger one is streamed through square tiles, and memory depends on the tile
-size and thread count, not on the raster size; docs/tiling.md):
+Performance (with -method mcmd a band of up to 2^21 cells is filled whole, one
+field per void; a larger one, or a paper method, is streamed through square
+tiles, and memory depends on the tile size and thread count, not on the raster
+size; docs/tiling.md):
   -tile size       Tile side in cells when tiling, 2^n+1 (e.g. 129, 257, 513);
                    0 = automatic (129, or less for a raster that fits in a
                    smaller tile). -o TILING=ALWAYS tiles small rasters too.
