@@ -169,8 +169,19 @@ bool fill_single_field(const RasterAccess& raster, const FillParams& params, con
   report(progress, 0.0);
   raster.read(0, 0, r.w, r.h, r.z.data(), r.valid.data());
 
+  // Counts, and the known elevation range: one noise unit for every field,
+  // as for every window of a tiled fill.
   TiledFillStats st;
-  for (std::uint8_t v : r.valid) (v ? st.known_cells : st.void_cells) += 1;
+  double lo = 0.0, hi = 0.0;
+  for (std::size_t i = 0; i < cells; ++i) {
+    if (!r.valid[i]) {
+      ++st.void_cells;
+      continue;
+    }
+    lo = st.known_cells ? std::min(lo, r.z[i]) : r.z[i];
+    hi = st.known_cells ? std::max(hi, r.z[i]) : r.z[i];
+    ++st.known_cells;
+  }
   if (stats) *stats = st;
   if (st.void_cells == 0) {
     report(progress, 1.0);
@@ -178,19 +189,8 @@ bool fill_single_field(const RasterAccess& raster, const FillParams& params, con
   }
   if (st.known_cells == 0) throw std::invalid_argument("the raster has no known cell to fill from");
 
-  // One noise unit for every field, as for every window of a tiled fill.
   FillParams p = params;
-  if (p.noise_unit <= 0) {
-    double lo = 0, hi = 0;
-    bool any = false;
-    for (std::size_t i = 0; i < cells; ++i)
-      if (r.valid[i]) {
-        lo = any ? std::min(lo, r.z[i]) : r.z[i];
-        hi = any ? std::max(hi, r.z[i]) : r.z[i];
-        any = true;
-      }
-    p.noise_unit = hi - lo;
-  }
+  if (p.noise_unit <= 0) p.noise_unit = hi - lo;
   const std::vector<Domain> domains = find_domains(r);
   DeepGuide dg(r, p);
   report(progress, 0.05);

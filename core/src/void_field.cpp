@@ -32,6 +32,12 @@ Box void_field_rect(const Box& box, int width, int height) {
 
 namespace {
 
+// The guide's value at cell i of the field `rect` (row-major).
+double guide_at(const CoarseGuide& guide, const Box& rect, std::size_t i) {
+  const auto w = static_cast<std::size_t>(rect.width());
+  return guide.at(rect.x0 + static_cast<long long>(i % w), rect.y0 + static_cast<long long>(i / w));
+}
+
 // The cells of other voids inside a field would be solved again in their own
 // fields (the blob benchmark's fields held 4.6× the raster's void cells).
 // Where they outnumber the component's own cells (and are more than a few),
@@ -54,7 +60,7 @@ void pin_other_voids(const Box& rect, const std::vector<VoidRun>& runs, const De
   if (!guide || !guide->ready()) return;
   for (std::size_t i = 0; i < state.size(); ++i) {
     if (state[i] != CellState::unknown || own[i]) continue;
-    z[i] = guide->at(rect.x0 + static_cast<long long>(i % w), rect.y0 + static_cast<long long>(i / w));
+    z[i] = guide_at(*guide, rect, i);
     state[i] = CellState::known;
   }
 }
@@ -103,7 +109,7 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
   for (std::size_t i = 0; i < cells; ++i) {
     state[i] = valid[i] ? CellState::known : CellState::unknown;
     if (pinned && dist[i] > pins.radius) {
-      z[i] = guide->at(rect.x0 + static_cast<long long>(i % w), rect.y0 + static_cast<long long>(i / w));
+      z[i] = guide_at(*guide, rect, i);
       state[i] = CellState::known;
     }
   }
