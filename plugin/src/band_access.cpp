@@ -43,9 +43,7 @@ RasterAccess BandAccess::access() {
 }
 
 void BandAccess::read(int x0, int y0, int w, int h, double* z, std::uint8_t* valid) {
-  const WindowData d = read_window(source_, source_type_, request_.masks, Window{x0, y0, w, h}, request_.use_nodata);
-  std::copy(d.z.begin(), d.z.end(), z);
-  std::copy(d.valid.begin(), d.valid.end(), valid);
+  read_cells(source_, source_type_, request_.masks, Window{x0, y0, w, h}, request_.use_nodata, z, valid, nullptr);
   if (!in_place_) return;
   const std::size_t W = static_cast<std::size_t>(source_.GetXSize());
   for (int r = 0; r < h; ++r)

@@ -1,6 +1,8 @@
 #include "band_window.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "errors.hpp"
@@ -16,54 +18,107 @@ void check_io(CPLErr err, const char* what) {
   }
 }
 
-void apply_mask(GDALRasterBand& mask, const Window& win, std::vector<std::uint8_t>& valid) {
-  std::vector<double> row(static_cast<std::size_t>(win.w));
-  for (int r = 0; r < win.h; ++r) {
-    check_io(mask.RasterIO(GF_Read, win.x, win.y + r, win.w, 1, row.data(), win.w, 1, GDT_Float64, 0, 0,
-                           nullptr),
-             "cannot read the mask");
-    std::uint8_t* v = valid.data() + static_cast<std::size_t>(r) * win.w;
-    for (int c = 0; c < win.w; ++c)
-      if (row[c] == 0.0) v[c] = 0;
-  }
+void apply_mask(GDALRasterBand& mask, const Window& win, std::uint8_t* valid) {
+  // One request for the window, as bytes (a mask is 0 where invalid).
+  std::vector<std::uint8_t> m(win.cells());
+  check_io(mask.RasterIO(GF_Read, win.x, win.y, win.w, win.h, m.data(), win.w, win.h, GDT_Byte, 0, 0, nullptr),
+           "cannot read the mask");
+  for (std::size_t i = 0; i < m.size(); ++i)
+    if (m[i] == 0) valid[i] = 0;
 }
 
-void read_values(GDALRasterBand& band, const PixelType& type, const Window& win, std::vector<double>& z) {
-  z.resize(win.cells());
+// The window in the band's own type, widened here: GDAL's conversion to
+// Float64 cost three times the read itself (1201² Int16: 10 ms vs 3 ms).
+template <class T>
+std::vector<T> read_native(GDALRasterBand& band, const Window& win, GDALDataType gdt, double* z) {
+  std::vector<T> raw(win.cells());
+  check_io(band.RasterIO(GF_Read, win.x, win.y, win.w, win.h, raw.data(), win.w, win.h, gdt, 0, 0, nullptr),
+           "cannot read the band");
+  for (std::size_t i = 0; i < raw.size(); ++i) z[i] = static_cast<double>(raw[i]);
+  return raw;
+}
+
+// An integer band whose own mask is its nodata value (GMF_NODATA), the value
+// an exact integer of the type: the mask is raw == nodata, computed here
+// instead of by GDAL's mask band, which reads the window a second time. A
+// nodata GDAL would truncate or ignore (fractional, out of range) is left to
+// GDAL's mask band.
+template <class T>
+bool integer_nodata(GDALRasterBand& band, const PixelType& type, T& out) {
+  if (band.GetMaskFlags() != GMF_NODATA || !type.has_nodata || std::isnan(type.nodata)) return false;
+  if (type.nodata < static_cast<double>(std::numeric_limits<T>::lowest()) ||
+      type.nodata > static_cast<double>(std::numeric_limits<T>::max()) || type.nodata != std::floor(type.nodata))
+    return false;
+  out = static_cast<T>(type.nodata);
+  return true;
+}
+
+template <class T>
+bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win, GDALDataType gdt,
+                  double* z, std::uint8_t* valid) {
+  const std::vector<T> raw = read_native<T>(band, win, gdt, z);
+  T nodata{};
+  if (!integer_nodata<T>(band, type, nodata)) return false;
+  for (std::size_t i = 0; i < raw.size(); ++i)
+    if (raw[i] == nodata) valid[i] = 0;
+  return true;
+}
+
+// Reads the values into z; returns true when it also marked the band's
+// own nodata mask in `valid` (the caller then skips that mask).
+bool read_values(GDALRasterBand& band, const PixelType& type, const Window& win, double* z, std::uint8_t* valid) {
+  switch (type.signed_byte ? GDT_Unknown : type.gdt) {
+    case GDT_Byte: return read_integer<std::uint8_t>(band, type, win, GDT_Byte, z, valid);
+    case GDT_Int16: return read_integer<std::int16_t>(band, type, win, GDT_Int16, z, valid);
+    case GDT_UInt16: return read_integer<std::uint16_t>(band, type, win, GDT_UInt16, z, valid);
+    case GDT_Int32: return read_integer<std::int32_t>(band, type, win, GDT_Int32, z, valid);
+    case GDT_UInt32: return read_integer<std::uint32_t>(band, type, win, GDT_UInt32, z, valid);
+    case GDT_Float32: read_native<float>(band, win, GDT_Float32, z); return false;
+    default: break;
+  }
   if (!type.signed_byte) {
-    check_io(band.RasterIO(GF_Read, win.x, win.y, win.w, win.h, z.data(), win.w, win.h, GDT_Float64, 0, 0, nullptr),
+    check_io(band.RasterIO(GF_Read, win.x, win.y, win.w, win.h, z, win.w, win.h, GDT_Float64, 0, 0, nullptr),
              "cannot read the band");
-    return;
+    return false;
   }
   std::vector<signed char> raw(win.cells());
   check_io(band.RasterIO(GF_Read, win.x, win.y, win.w, win.h, raw.data(), win.w, win.h, GDT_Byte, 0, 0, nullptr),
            "cannot read the band");
   for (std::size_t i = 0; i < raw.size(); ++i) z[i] = raw[i];
+  return false;
 }
 
 }  // namespace
 
-WindowData read_window(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
-                       const Window& win, bool signed_nodata) {
-  WindowData d;
-  d.win = win;
-  d.valid.assign(win.cells(), 1);
-  read_values(band, type, win, d.z);
+std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
+                       const Window& win, bool signed_nodata, double* z, std::uint8_t* valid, bool* marked) {
+  const std::size_t n = win.cells();
+  std::fill(valid, valid + n, std::uint8_t{1});
+  const bool own_nodata_done = read_values(band, type, win, z, valid);
   const bool nodata_voids = signed_nodata && type.signed_byte && type.has_nodata;
-  for (std::size_t i = 0; i < d.z.size(); ++i)
-    if (nodata_voids && d.z[i] == type.nodata) d.valid[i] = 0;
-  for (std::size_t i = 0; i < d.z.size(); ++i)
-    if (!std::isfinite(d.z[i])) d.valid[i] = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if ((nodata_voids && z[i] == type.nodata) || !std::isfinite(z[i])) valid[i] = 0;
   for (GDALRasterBand* mask : masks) {
     if (mask->GetXSize() != band.GetXSize() || mask->GetYSize() != band.GetYSize())
       throw Failure(CPLE_IllegalArg, "the mask is " + std::to_string(mask->GetXSize()) + "x" +
                                          std::to_string(mask->GetYSize()) + " but the band is " +
                                          std::to_string(band.GetXSize()) + "x" +
                                          std::to_string(band.GetYSize()));
-    apply_mask(*mask, win, d.valid);
+    if (own_nodata_done && mask == band.GetMaskBand()) continue;
+    apply_mask(*mask, win, valid);
   }
-  for (std::uint8_t v : d.valid) d.void_count += v ? 0 : 1;
-  d.voids_marked = !masks.empty() || nodata_voids || d.void_count > 0;
+  const std::size_t voids = n - static_cast<std::size_t>(std::count(valid, valid + n, std::uint8_t{1}));
+  if (marked) *marked = !masks.empty() || nodata_voids || voids > 0;
+  return voids;
+}
+
+WindowData read_window(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
+                       const Window& win, bool signed_nodata) {
+  WindowData d;
+  d.win = win;
+  d.z.resize(win.cells());
+  d.valid.resize(win.cells());
+  d.void_count = read_cells(band, type, masks, win, signed_nodata, d.z.data(), d.valid.data(), &d.voids_marked);
   return d;
 }
 

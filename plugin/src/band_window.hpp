@@ -37,6 +37,11 @@ struct WindowData {
 WindowData read_window(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
                        const Window& win, bool signed_nodata);
 
+// read_window into the caller's z and valid (win.cells() each); returns the
+// void count, and whether voids are marked at all in *marked (may be null).
+std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
+                       const Window& win, bool signed_nodata, double* z, std::uint8_t* valid, bool* marked);
+
 // Write z[i] for every cell with write[i] != 0, converted to the band's type;
 // no other cell is touched. Throws Failure on I/O errors.
 void write_cells(GDALRasterBand& band, const PixelType& type, const Window& win,
