@@ -77,26 +77,65 @@ double plane_at_lattice(double n, double z, double x, double y, double xx, doubl
 }  // namespace
 
 // A pure thin plate extends the slopes at a void's edge linearly: fine across
-// a blob, but across a void thousands of cells wide (half an SRTM tile) it
-// builds mountains and trenches out of a coastline. When some void cell lies
-// far from any data, the fill becomes a thin plate under tension, whose
-// membrane term lets slopes level off over kSlopeReach cells instead. The
-// tension ramps in with the void's reach so that ordinary voids keep the
-// plain thin plate.
-constexpr double kSlopeReach = 64.0;        // raster cells
-constexpr double kTensionFrom = 128.0;      // farthest void cell from data: no tension below
-constexpr double kTensionFull = 512.0;      // full tension above
+// a blob, but across a void hundreds or thousands of cells wide it builds
+// mountains and trenches out of the slopes at its rim. Far from data the
+// guide becomes a thin plate under tension, whose membrane term lets slopes
+// level off over kSlopeReach cells instead, weighted in per void with how
+// far that void reaches: ordinary voids keep the plain thin plate, and a
+// huge void does not put its neighbours under tension.
+constexpr double kSlopeReach = 8.0;         // raster cells
+constexpr double kFarVoidCells = 128.0;     // beyond: the guide's surface deep inside, tiles
+constexpr double kTensionFrom = 64.0;       // farthest void cell from data: no tension below
+constexpr double kTensionFull = 256.0;      // full tension above
 
-double far_void_tension(double farthest, int stride) {
+double far_void_weight(double farthest) {
   const double ramp = std::clamp((farthest - kTensionFrom) / (kTensionFull - kTensionFrom), 0.0, 1.0);
-  const double reach = kSlopeReach / stride;  // in lattice cells
-  return ramp * ramp * (3.0 - 2.0 * ramp) / (reach * reach);
+  return ramp * ramp * (3.0 - 2.0 * ramp);
 }
 
-double CoarseGuide::lattice_tension() const {
-  double farthest = 0.0;
-  for (double d : distance_to_valid(known_.data(), cw_, ch_)) farthest = std::max(farthest, d * stride_);
-  return far_void_tension(farthest, stride_);
+bool reaches_far(double farthest) { return farthest > kFarVoidCells; }
+
+namespace {
+// The full tension (ThinPlateSchedule::tension) on a lattice of `stride` cells.
+double full_tension(int stride) {
+  const double reach = kSlopeReach / stride;  // in lattice cells
+  return 1.0 / (reach * reach);
+}
+}  // namespace
+
+std::vector<double> CoarseGuide::far_void_weights() const {
+  const std::vector<double> dist = distance_to_valid(known_.data(), cw_, ch_);
+  std::vector<double> weight(known_.size(), 0.0);
+  std::vector<std::uint8_t> seen(known_);
+  std::vector<std::size_t> component, stack;
+  for (std::size_t start = 0; start < seen.size(); ++start) {
+    if (seen[start]) continue;
+    // The unknown points 8-connected to `start`, and the farthest of them from data.
+    component.clear();
+    stack.assign(1, start);
+    seen[start] = 1;
+    double farthest = 0.0;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      component.push_back(i);
+      farthest = std::max(farthest, dist[i] * stride_);
+      const int x = static_cast<int>(i % cw_), y = static_cast<int>(i / cw_);
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= cw_ || ny >= ch_) continue;
+          const std::size_t n = static_cast<std::size_t>(ny) * cw_ + nx;
+          if (!seen[n]) {
+            seen[n] = 1;
+            stack.push_back(n);
+          }
+        }
+    }
+    const double w = far_void_weight(farthest);
+    for (std::size_t i : component) weight[i] = w;
+  }
+  return weight;
 }
 
 void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, double tension, const ProgressFn& progress) const {
@@ -104,6 +143,27 @@ void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, double tension
   ThinPlateSchedule schedule;
   schedule.tension = tension;
   thin_plate_fill_scheduled(g, params, schedule, progress);
+}
+
+std::vector<double> CoarseGuide::filled(const std::vector<double>& start, double tension, const FillParams& params,
+                                        const ProgressFn& progress) const {
+  std::vector<double> out = start;
+  if (is_smooth_default(params) && tension == 0) {
+    // The lattice as it is, no 2^m+1 padding (a 676×301 lattice padded to
+    // 1025² was 5× the work). Not under tension: across a void reaching the
+    // raster's edge, the mirror (a level surface there) is what stops a
+    // coast's slope, which a free edge under tension did not (2.2 km too
+    // high in HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains).
+    std::vector<CellState> state(out.size());
+    for (std::size_t i = 0; i < state.size(); ++i) state[i] = known_[i] ? CellState::known : CellState::unknown;
+    thin_plate_smooth(FieldView{cw_, ch_, out.data(), state.data()}, ThinPlateSchedule{}, progress);
+    return out;
+  }
+  Grid g = mirror_padded_grid(start.data(), known_.data(), cw_, ch_, levels_to_cover(cw_, ch_));
+  fill_lattice(g, params, tension, progress);
+  for (int j = 0; j < ch_; ++j)
+    for (int i = 0; i < cw_; ++i) out[static_cast<std::size_t>(j) * cw_ + i] = g.z(i, j);
+  return out;
 }
 
 bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
@@ -122,21 +182,17 @@ bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
   if (known_count == 0) return false;
   value_ = mean;
   if (known_count < value_.size()) {
-    const double tension = params.method == Method::mcmd ? lattice_tension() : 0.0;
-    if (is_smooth_default(params) && tension == 0) {
-      // The lattice as it is, no 2^m+1 padding (a 676×301 lattice padded to
-      // 1025² was 5× the work). Not under tension: across a void reaching the
-      // raster's edge, the mirror (a level surface there) is what stops a
-      // coast's slope, which a free edge under tension did not (2.2 km too
-      // high in HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains).
-      std::vector<CellState> state(value_.size());
-      for (std::size_t i = 0; i < state.size(); ++i) state[i] = known[i] ? CellState::known : CellState::unknown;
-      thin_plate_smooth(FieldView{cw_, ch_, value_.data(), state.data()}, ThinPlateSchedule{}, progress);
-    } else {
-      Grid g = mirror_padded_grid(mean.data(), known.data(), cw_, ch_, levels_to_cover(cw_, ch_));
-      fill_lattice(g, params, tension, progress);
-      for (int j = 0; j < ch_; ++j)
-        for (int i = 0; i < cw_; ++i) value_[static_cast<std::size_t>(j) * cw_ + i] = g.z(i, j);
+    const std::vector<double> weight =
+        params.method == Method::mcmd ? far_void_weights() : std::vector<double>(value_.size(), 0.0);
+    const bool far = std::any_of(weight.begin(), weight.end(), [](double w) { return w > 0; });
+    value_ = filled(mean, 0.0, params, sub_progress(progress, 0.0, far ? 0.3 : 1.0));
+    if (far) {
+      // Each void's blend of the two surfaces: one weight per void, so the
+      // fill stays as smooth as either inside it, and both agree with the
+      // known points around it.
+      const std::vector<double> tense =
+          filled(mean, full_tension(stride_), params, sub_progress(progress, 0.3, 1.0));
+      for (std::size_t i = 0; i < value_.size(); ++i) value_[i] += weight[i] * (tense[i] - value_[i]);
     }
   }
   ready_ = true;

@@ -202,7 +202,7 @@ bool fill_single_field(const RasterAccess& raster, const FillParams& params, con
   // and its surface deep inside (one field under tension, solved to the usual
   // tolerance, still carried a coast's slope 2 km up): leave it to the tiles.
   for (const DomainResult& res : results)
-    if (far_void_tension(res.farthest, 1) > 0) return false;
+    if (reaches_far(res.farthest)) return false;
 
   // The filled cells into z, and the write mask (reusing `valid`).
   std::fill(r.valid.begin(), r.valid.end(), std::uint8_t{0});

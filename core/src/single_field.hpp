@@ -30,7 +30,7 @@ constexpr int kMinGuideStride = 4;
 // cells (within max_distance of a known cell when that is > 0, measured
 // exactly). Stats as tiled_fill's (tile_side 0: no tiles). Returns false,
 // having written nothing, when a void cell lies so far from data that the
-// coarse guide's tension is needed (far_void_tension > 0): tiles then.
+// coarse guide's tension is needed (reaches_far): tiles then.
 // Throws as tiled_fill.
 bool fill_single_field(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
                        const ProgressFn& progress, TiledFillStats* stats);

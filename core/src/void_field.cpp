@@ -87,7 +87,7 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
       reach > r * std::sqrt(2.0) && (large || reach > pins.radius) && all_within_chebyshev(valid, w, h, r))
     reach = r * std::sqrt(2.0);
   const bool may_pin = pins.guide && reach > pins.radius;
-  const bool need_dist = max_distance > 0 || may_pin || far_void_tension(reach, 1) > 0;
+  const bool need_dist = max_distance > 0 || may_pin || reaches_far(reach);
   // Exact: a void cell's nearest known cell is next to its component.
   const std::vector<double> dist = need_dist ? distance_to_valid(valid, w, h) : std::vector<double>{};
   VoidFieldResult out;
@@ -97,7 +97,7 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
     for (const VoidRun& run : runs)
       for (int x = run.x0; x < run.x1; ++x) out.farthest = std::max(out.farthest, dist[at(x, run.y)]);
   }
-  if (far_void_tension(out.farthest, 1) > 0) return out;
+  if (reaches_far(out.farthest)) return out;
   const CoarseGuide* guide = nullptr;
   if (may_pin) {
     const bool deep = std::any_of(dist.begin(), dist.end(), [&](double d) { return d > pins.radius; });

@@ -51,8 +51,8 @@ struct VoidFieldResult {
 // Pre: z and valid hold the field `rect` (row-major, raster coordinates of
 // rect), which contains the component's runs and a known ring around them;
 // z is taken over as the solver's work array.
-// Post: when farthest > 128 cells (the coarse guide's tension is needed, see
-// far_void_tension) values is empty: the caller must fill it another way.
+// Post: when the component reaches far (reaches_far: the coarse guide's
+// tension is needed) values is empty: the caller must fill it another way.
 // `threads` run the solver of a large field (same result for any count).
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
                                  const std::uint8_t* valid, const DeepPins& pins, const FillParams& params,

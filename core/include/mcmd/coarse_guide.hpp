@@ -29,11 +29,15 @@ int guide_stride(int width, int height, int max_side = 1025);
 // guide (measured: 4 and 16 were worse on blob voids; docs/tiling.md).
 constexpr double kGuideRadiusStrides = 8.0;
 
-// The default method's tension (ThinPlateSchedule::tension, in the units of a
-// lattice of `stride` raster cells) when the void cell farthest from data lies
-// `farthest` raster cells away: 0 up to 128 cells, ramping to full beyond 512
-// (slopes level off over about 64 cells; docs/tiling.md, the coarse guide).
-double far_void_tension(double farthest, int stride);
+// A void whose farthest cell lies more than 128 cells from data reaches far:
+// deep inside it the guide's surface takes over, under tension, and the
+// small-raster path leaves the raster to tiles (docs/tiling.md).
+bool reaches_far(double farthest);
+
+// How much of the guide's tensioned surface a void whose farthest cell lies
+// `farthest` raster cells from data takes: 0 up to 64 cells, ramping to 1
+// at 256 (docs/tiling.md, the coarse guide).
+double far_void_weight(double farthest);
 
 class CoarseGuide {
  public:
@@ -69,8 +73,12 @@ class CoarseGuide {
  private:
   // Fill the lattice's unknown points (thin plate under `tension` for the default method).
   void fill_lattice(Grid& g, const FillParams& params, double tension, const ProgressFn& progress) const;
-  // far_void_tension for this lattice's known points.
-  double lattice_tension() const;
+  // `start` (cw × ch, known points set) filled, under `tension`.
+  std::vector<double> filled(const std::vector<double>& start, double tension, const FillParams& params,
+                             const ProgressFn& progress) const;
+  // Per lattice point: far_void_weight of its void (8-connected unknown
+  // points; 0 at known points), distances measured on the lattice.
+  std::vector<double> far_void_weights() const;
   int width_ = 1, height_ = 1, stride_ = 1, cw_ = 1, ch_ = 1;
   struct Moments {  // of the known cells of a block, offsets from the lattice point
     double n = 0, z = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0, zx = 0, zy = 0;

@@ -1,0 +1,77 @@
+// The coarse guide's tension is weighted per void (docs/tiling.md, "The
+// coarse guide"): a void reaching far from data levels off, while an
+// ordinary void in the same raster keeps the plain thin plate.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "mcmd/coarse_guide.hpp"
+
+namespace {
+
+// A bowl rising towards the right: the thin plate reproduces a quadratic,
+// a membrane (tension) does not.
+double bowl(int x, int y) { return (x - 150.0) * (x - 150.0) / 50.0 + 0.5 * y; }
+
+struct Raster {
+  int w = 700, h = 300;
+  std::vector<double> z;
+  std::vector<std::uint8_t> valid;
+  Raster() : z(static_cast<std::size_t>(w) * h), valid(z.size(), 1) {
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) z[index(x, y)] = bowl(x, y);
+  }
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * w + x; }
+  void punch_disc(int cx, int cy, int r) {
+    for (int y = cy - r; y <= cy + r; ++y)
+      for (int x = cx - r; x <= cx + r; ++x)
+        if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) valid[index(x, y)] = 0;
+  }
+  mcmd::CoarseGuide guide() const {
+    mcmd::CoarseGuide g(w, h, mcmd::guide_stride(w, h));
+    g.add_rows(0, h, z.data(), valid.data());
+    EXPECT_TRUE(g.solve(mcmd::FillParams{}));
+    return g;
+  }
+};
+
+TEST(CoarseGuide, FarVoidWeightRampsBetween64And256Cells) {
+  EXPECT_EQ(mcmd::far_void_weight(10.0), 0.0);
+  EXPECT_EQ(mcmd::far_void_weight(64.0), 0.0);
+  EXPECT_GT(mcmd::far_void_weight(100.0), 0.0);
+  EXPECT_LT(mcmd::far_void_weight(200.0), 1.0);
+  EXPECT_EQ(mcmd::far_void_weight(256.0), 1.0);
+  EXPECT_FALSE(mcmd::reaches_far(128.0));
+  EXPECT_TRUE(mcmd::reaches_far(129.0));
+}
+
+TEST(CoarseGuide, FarVoidLevelsOffWhileAnOrdinaryVoidKeepsTheThinPlate) {
+  Raster r;
+  ASSERT_EQ(mcmd::guide_stride(r.w, r.h), 1);  // lattice = raster: no block averaging
+  r.punch_disc(100, 150, 16);                  // ordinary: 16 cells from data at most
+  for (int y = 0; y < r.h; ++y)                // far: the right 400 columns, 400 cells deep
+    for (int x = 300; x < r.w; ++x) r.valid[r.index(x, y)] = 0;
+  const mcmd::CoarseGuide g = r.guide();
+
+  // The disc: a thin plate is exact on the bowl; under the far void's
+  // tension (a membrane over 8 cells) its centre would sag by about a metre.
+  double worst = 0.0;
+  for (int y = 134; y <= 166; ++y)
+    for (int x = 84; x <= 116; ++x)
+      if (!r.valid[r.index(x, y)]) worst = std::max(worst, std::abs(g.at(x, y) - bowl(x, y)));
+  EXPECT_LT(worst, 0.3);
+
+  // The far void: the bowl's slope at its edge (4 m per cell, 400 m high
+  // there) is not carried 400 cells on (a plain thin plate would climb past
+  // 1600 m); the surface levels off near the data's range.
+  double top = 0.0;
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 300; x < r.w; ++x) top = std::max(top, g.at(x, y));
+  const double known_top = bowl(299, r.h - 1);
+  EXPECT_LT(top, known_top + 100.0);
+}
+
+}  // namespace
