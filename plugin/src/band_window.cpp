@@ -54,25 +54,27 @@ bool integer_nodata(GDALRasterBand& band, const PixelType& type, T& out) {
 }
 
 template <class T>
-bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win, GDALDataType gdt,
+bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win, GDALDataType gdt, bool own_mask,
                   double* z, std::uint8_t* valid) {
   const std::vector<T> raw = read_native<T>(band, win, gdt, z);
   T nodata{};
-  if (!integer_nodata<T>(band, type, nodata)) return false;
+  if (!own_mask || !integer_nodata<T>(band, type, nodata)) return false;
   for (std::size_t i = 0; i < raw.size(); ++i)
     if (raw[i] == nodata) valid[i] = 0;
   return true;
 }
 
-// Reads the values into z; returns true when it also marked the band's
-// own nodata mask in `valid` (the caller then skips that mask).
-bool read_values(GDALRasterBand& band, const PixelType& type, const Window& win, double* z, std::uint8_t* valid) {
+// Reads the values into z; with `own_mask` (the band's own mask is one of
+// the masks asked for) returns true when it also marked that mask's voids
+// in `valid` (the caller then skips it).
+bool read_values(GDALRasterBand& band, const PixelType& type, const Window& win, bool own_mask, double* z,
+                 std::uint8_t* valid) {
   switch (type.signed_byte ? GDT_Unknown : type.gdt) {
-    case GDT_Byte: return read_integer<std::uint8_t>(band, type, win, GDT_Byte, z, valid);
-    case GDT_Int16: return read_integer<std::int16_t>(band, type, win, GDT_Int16, z, valid);
-    case GDT_UInt16: return read_integer<std::uint16_t>(band, type, win, GDT_UInt16, z, valid);
-    case GDT_Int32: return read_integer<std::int32_t>(band, type, win, GDT_Int32, z, valid);
-    case GDT_UInt32: return read_integer<std::uint32_t>(band, type, win, GDT_UInt32, z, valid);
+    case GDT_Byte: return read_integer<std::uint8_t>(band, type, win, GDT_Byte, own_mask, z, valid);
+    case GDT_Int16: return read_integer<std::int16_t>(band, type, win, GDT_Int16, own_mask, z, valid);
+    case GDT_UInt16: return read_integer<std::uint16_t>(band, type, win, GDT_UInt16, own_mask, z, valid);
+    case GDT_Int32: return read_integer<std::int32_t>(band, type, win, GDT_Int32, own_mask, z, valid);
+    case GDT_UInt32: return read_integer<std::uint32_t>(band, type, win, GDT_UInt32, own_mask, z, valid);
     case GDT_Float32: read_native<float>(band, win, GDT_Float32, z); return false;
     default: break;
   }
@@ -94,7 +96,8 @@ std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::v
                        const Window& win, bool signed_nodata, double* z, std::uint8_t* valid, bool* marked) {
   const std::size_t n = win.cells();
   std::fill(valid, valid + n, std::uint8_t{1});
-  const bool own_nodata_done = read_values(band, type, win, z, valid);
+  const bool own_mask = std::find(masks.begin(), masks.end(), band.GetMaskBand()) != masks.end();
+  const bool own_nodata_done = read_values(band, type, win, own_mask, z, valid);
   const bool nodata_voids = signed_nodata && type.signed_byte && type.has_nodata;
   for (std::size_t i = 0; i < n; ++i)
     if ((nodata_voids && z[i] == type.nodata) || !std::isfinite(z[i])) valid[i] = 0;

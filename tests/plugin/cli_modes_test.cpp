@@ -65,6 +65,48 @@ TEST(CliModes, MaskFileMarksTheVoids) {
     }
 }
 
+// -nomask: the band's nodata value marks nothing (its cells are values like
+// any other); only the -mask file's voids are filled. The plugin reads an
+// integer band's nodata cells itself, so this must hold there too.
+TEST(CliModes, NoMaskIgnoresTheNodataValue) {
+  TempDir dir;
+  RasterSpec spec;  // Int16, nodata -32768 on the test voids
+  const std::string src = dir.file("src.tif"), dst = dir.file("dst.tif"), mask = dir.file("mask.tif");
+  make_raster(src, spec);
+  const auto in = band_values(src);
+  // The mask's only void: a 5×5 block of valid cells.
+  const auto in_block = [](int x, int y) { return x >= 30 && x < 35 && y >= 5 && y < 10; };
+  {
+    GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
+    GDALDataset* m = gtiff->Create(mask.c_str(), spec.width, spec.height, 1, GDT_Byte, nullptr);
+    ASSERT_NE(m, nullptr);
+    std::vector<GByte> v(static_cast<std::size_t>(spec.width) * spec.height, 255);
+    for (int y = 0; y < spec.height; ++y)
+      for (int x = 0; x < spec.width; ++x) {
+        ASSERT_FALSE(in_block(x, y) && is_test_void(x, y, spec.width, spec.height));
+        if (in_block(x, y)) v[static_cast<std::size_t>(y) * spec.width + x] = 0;
+      }
+    ASSERT_EQ(m->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, spec.width, spec.height, v.data(), spec.width,
+                                            spec.height, GDT_Byte, 0, 0, nullptr),
+              CE_None);
+    GDALClose(m);
+  }
+  const RunResult r = run_cli({"-q", "-nomask", "-mask", mask, src, dst});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto out = band_values(dst);
+  int filled = 0;
+  for (int y = 0; y < spec.height; ++y)
+    for (int x = 0; x < spec.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * spec.width + x;
+      if (in_block(x, y)) {
+        filled += out[i] != in[i];
+      } else {
+        ASSERT_EQ(out[i], in[i]) << "cell outside the mask's void changed at " << x << "," << y;
+      }
+    }
+  EXPECT_GT(filled, 0);
+}
+
 // The source's own per-dataset mask (no nodata value) marks the voids, also
 // when the fill reads its values back from the uncompressed output copy, and
 // in a compressed output (through the work copy).
