@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include "errors.hpp"
@@ -39,18 +38,13 @@ std::vector<T> read_native(GDALRasterBand& band, const Window& win, GDALDataType
 }
 
 // An integer band whose own mask is its nodata value (GMF_NODATA), the value
-// an exact integer of the type: the mask is raw == nodata, computed here
-// instead of by GDAL's mask band, which reads the window a second time. A
-// nodata GDAL would truncate or ignore (fractional, out of range) is left to
-// GDAL's mask band.
+// an exact integer of the type (nodata_as): the mask is raw == nodata,
+// computed here instead of by GDAL's mask band, which reads the window a
+// second time. A nodata GDAL would truncate or ignore (fractional, out of
+// range) is left to GDAL's mask band.
 template <class T>
 bool integer_nodata(GDALRasterBand& band, const PixelType& type, T& out) {
-  if (band.GetMaskFlags() != GMF_NODATA || !type.has_nodata || std::isnan(type.nodata)) return false;
-  if (type.nodata < static_cast<double>(std::numeric_limits<T>::lowest()) ||
-      type.nodata > static_cast<double>(std::numeric_limits<T>::max()) || type.nodata != std::floor(type.nodata))
-    return false;
-  out = static_cast<T>(type.nodata);
-  return true;
+  return band.GetMaskFlags() == GMF_NODATA && nodata_as<T>(type, out);
 }
 
 template <class T>

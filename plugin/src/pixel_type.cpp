@@ -51,17 +51,6 @@ void encode_float(const double* v, std::size_t n, T* out, bool has_nodata, doubl
   }
 }
 
-// The nodata value as T when it is exactly representable; otherwise no cell can hit it.
-template <class T>
-bool nodata_as(const PixelType& t, T& out) {
-  if (!t.has_nodata || std::isnan(t.nodata)) return false;
-  if (t.nodata < static_cast<double>(std::numeric_limits<T>::lowest()) ||
-      t.nodata > static_cast<double>(std::numeric_limits<T>::max()) || t.nodata != std::floor(t.nodata))
-    return false;
-  out = static_cast<T>(t.nodata);
-  return true;
-}
-
 template <class T>
 void encode_small_int(const PixelType& t, const double* v, std::size_t n, void* out) {
   T nd{};

@@ -2,8 +2,10 @@
 // elevations to that type (rounded, clamped, never equal to nodata).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "gdal_priv.h"
 
@@ -20,6 +22,18 @@ struct PixelType {
 
 // Describe `band`. Throws Failure for complex or unknown types.
 PixelType pixel_type_of(GDALRasterBand& band);
+
+// The nodata value as the integer type T when it is exactly representable
+// (an integer in T's range); otherwise no cell of that type can hold it.
+template <class T>
+bool nodata_as(const PixelType& t, T& out) {
+  if (!t.has_nodata || std::isnan(t.nodata)) return false;
+  if (t.nodata < static_cast<double>(std::numeric_limits<T>::lowest()) ||
+      t.nodata > static_cast<double>(std::numeric_limits<T>::max()) || t.nodata != std::floor(t.nodata))
+    return false;
+  out = static_cast<T>(t.nodata);
+  return true;
+}
 
 // Convert `count` doubles to the native type into `out` (count · bytes_per_pixel).
 // Integers are rounded half away from zero and clamped; any value that would
