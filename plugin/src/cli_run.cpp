@@ -246,9 +246,10 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     DatasetPtr tmp =
         create_copy(gtiff, work.path(), *src, work_co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
     tmp = reopen_for_update(std::move(tmp), work.path(), args.dst);
+    // The fill reads the work copy: it must be whole.
+    if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
     for (int b = 1; b <= src->GetRasterCount(); ++b) copy_band_info(*src->GetRasterBand(b), *tmp->GetRasterBand(b));
     log.reset();
-    if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
     fill_bands(*tmp, *tmp, bands, mask, args, ProgressSlice{progress, 0.1, 0.85});
     tmp->FlushCache();
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
