@@ -41,25 +41,32 @@ void transform_1d(const double* f, double* d, int n, std::vector<int>& v, std::v
   }
 }
 
+// Per cell, the distance to the nearest valid cell in its column, at most
+// `cap` (cells with none get cap), by a downward and an upward scan over
+// whole rows (cache-friendly; exact on a binary image).
+template <class T>
+std::vector<T> column_distance(const std::uint8_t* valid, int w, int h, T cap) {
+  const std::size_t W = static_cast<std::size_t>(w);
+  std::vector<T> d(W * static_cast<std::size_t>(h));
+  for (int y = 0; y < h; ++y) {
+    T* row = d.data() + y * W;
+    const T* above = y > 0 ? row - W : nullptr;
+    const std::uint8_t* ok = valid + y * W;
+    for (std::size_t x = 0; x < W; ++x) row[x] = ok[x] ? T{0} : (above ? std::min(cap, above[x] + T{1}) : cap);
+  }
+  for (int y = h - 2; y >= 0; --y) {
+    T* row = d.data() + y * W;
+    for (std::size_t x = 0; x < W; ++x) row[x] = std::min(row[x], row[x + W] + T{1});
+  }
+  return d;
+}
+
 }  // namespace
 
 std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h) {
   const std::size_t W = static_cast<std::size_t>(w);
-  std::vector<double> sq(W * static_cast<std::size_t>(h));
-  // Columns: the distance to the nearest valid cell above or below, by a
-  // downward and an upward scan over whole rows (cache-friendly; on a binary
-  // image this is the column pass's exact result). Squared for the rows.
-  for (int y = 0; y < h; ++y) {
-    double* row = sq.data() + y * W;
-    const std::uint8_t* ok = valid + y * W;
-    const double* above = y > 0 ? row - W : nullptr;
-    for (std::size_t x = 0; x < W; ++x) row[x] = ok[x] ? 0.0 : (above ? above[x] + 1.0 : kInf);
-  }
-  for (int y = h - 2; y >= 0; --y) {
-    double* row = sq.data() + y * W;
-    const double* below = row + W;
-    for (std::size_t x = 0; x < W; ++x) row[x] = std::min(row[x], below[x] + 1.0);
-  }
+  // Columns first (the column pass's exact result), squared for the rows.
+  std::vector<double> sq = column_distance(valid, w, h, kInf);
   for (double& s : sq) s *= s;
   const int longest = w > h ? w : h;
   std::vector<int> v(longest);
@@ -76,19 +83,7 @@ std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h) {
 bool all_within_chebyshev(const std::uint8_t* valid, int w, int h, int r) {
   const std::size_t W = static_cast<std::size_t>(w);
   const int cap = r + 1;  // "farther than r" is all that counts
-  // Vertical distance to the nearest valid cell, capped, by a downward and an
-  // upward scan over whole rows.
-  std::vector<int> g(W * static_cast<std::size_t>(h));
-  for (int y = 0; y < h; ++y) {
-    int* row = g.data() + y * W;
-    const int* above = y > 0 ? row - W : nullptr;
-    const std::uint8_t* ok = valid + y * W;
-    for (std::size_t x = 0; x < W; ++x) row[x] = ok[x] ? 0 : (above ? std::min(cap, above[x] + 1) : cap);
-  }
-  for (int y = h - 2; y >= 0; --y) {
-    int* row = g.data() + y * W;
-    for (std::size_t x = 0; x < W; ++x) row[x] = std::min(row[x], row[x + W] + 1);
-  }
+  const std::vector<int> g = column_distance(valid, w, h, cap);  // vertical, capped
   // Along each row: the nearest column whose vertical distance is <= r.
   std::vector<int> left(W);
   for (int y = 0; y < h; ++y) {
