@@ -15,12 +15,7 @@ BandAccess::BandAccess(GDALRasterBand& source, GDALRasterBand& target, const Fil
       source_type_(pixel_type_of(source)),
       target_type_(pixel_type_of(target)),
       in_place_(&source == &target) {
-  for (GDALRasterBand* mask : request.masks)
-    if (mask->GetXSize() != source.GetXSize() || mask->GetYSize() != source.GetYSize())
-      throw Failure(CPLE_IllegalArg, "the mask is " + std::to_string(mask->GetXSize()) + "x" +
-                                         std::to_string(mask->GetYSize()) + " but the band is " +
-                                         std::to_string(source.GetXSize()) + "x" +
-                                         std::to_string(source.GetYSize()));
+  for (GDALRasterBand* mask : request.masks) check_mask_size(*mask, source);
   if (in_place_) {
     const std::size_t cells = static_cast<std::size_t>(source.GetXSize()) * static_cast<std::size_t>(source.GetYSize());
     written_.assign((cells + 63) / 64, 0);

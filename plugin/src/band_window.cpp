@@ -86,6 +86,13 @@ bool read_values(GDALRasterBand& band, const PixelType& type, const Window& win,
 
 }  // namespace
 
+void check_mask_size(GDALRasterBand& mask, GDALRasterBand& band) {
+  if (mask.GetXSize() != band.GetXSize() || mask.GetYSize() != band.GetYSize())
+    throw Failure(CPLE_IllegalArg, "the mask is " + std::to_string(mask.GetXSize()) + "x" +
+                                       std::to_string(mask.GetYSize()) + " but the band is " +
+                                       std::to_string(band.GetXSize()) + "x" + std::to_string(band.GetYSize()));
+}
+
 std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
                        const Window& win, bool signed_nodata, double* z, std::uint8_t* valid, bool* marked) {
   const std::size_t n = win.cells();
@@ -96,11 +103,7 @@ std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::v
   for (std::size_t i = 0; i < n; ++i)
     if ((nodata_voids && z[i] == type.nodata) || !std::isfinite(z[i])) valid[i] = 0;
   for (GDALRasterBand* mask : masks) {
-    if (mask->GetXSize() != band.GetXSize() || mask->GetYSize() != band.GetYSize())
-      throw Failure(CPLE_IllegalArg, "the mask is " + std::to_string(mask->GetXSize()) + "x" +
-                                         std::to_string(mask->GetYSize()) + " but the band is " +
-                                         std::to_string(band.GetXSize()) + "x" +
-                                         std::to_string(band.GetYSize()));
+    check_mask_size(*mask, band);
     if (own_nodata_done && mask == band.GetMaskBand()) continue;
     apply_mask(*mask, win, valid);
   }

@@ -37,6 +37,9 @@ struct WindowData {
 WindowData read_window(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
                        const Window& win, bool signed_nodata);
 
+// Throws Failure when `mask` is not the size of `band`.
+void check_mask_size(GDALRasterBand& mask, GDALRasterBand& band);
+
 // read_window into the caller's z and valid (win.cells() each); returns the
 // void count, and whether voids are marked at all in *marked (may be null).
 std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
