@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
+#include <exception>
 #include <stdexcept>
+#include <thread>
 
 #include "mcmd/distance.hpp"
 #include "mcmd/padding.hpp"
@@ -166,7 +169,39 @@ std::vector<double> CoarseGuide::filled(const std::vector<double>& start, double
   return out;
 }
 
-bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
+std::vector<double> CoarseGuide::plain_and_tense(const std::vector<double>& mean, const FillParams& params,
+                                                 const ProgressFn& progress, int threads) {
+  const double tension = full_tension(stride_);
+  if (threads <= 1) {
+    value_ = filled(mean, 0.0, params, sub_progress(progress, 0.0, 0.3));
+    return filled(mean, tension, params, sub_progress(progress, 0.3, 1.0));
+  }
+  // The tensioned solve (the larger: a padded lattice) on a helper thread,
+  // which stops when this one is cancelled; progress is this thread's.
+  std::atomic<bool> stop{false};
+  std::vector<double> tense;
+  std::exception_ptr failed;
+  std::thread helper([&] {
+    try {
+      tense = filled(mean, tension, params, [&stop](double) { return !stop.load(std::memory_order_relaxed); });
+    } catch (...) {
+      failed = std::current_exception();
+    }
+  });
+  try {
+    value_ = filled(mean, 0.0, params, sub_progress(progress, 0.0, 0.9));
+  } catch (...) {
+    stop = true;
+    helper.join();
+    throw;
+  }
+  helper.join();
+  if (failed) std::rethrow_exception(failed);
+  report(progress, 1.0);
+  return tense;
+}
+
+bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress, int threads) {
   std::vector<double> mean(moments_.size(), 0.0);
   std::vector<std::uint8_t> known(moments_.size(), 0);
   std::size_t known_count = 0;
@@ -185,13 +220,13 @@ bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress) {
     const std::vector<double> weight =
         params.method == Method::mcmd ? far_void_weights() : std::vector<double>(value_.size(), 0.0);
     const bool far = std::any_of(weight.begin(), weight.end(), [](double w) { return w > 0; });
-    value_ = filled(mean, 0.0, params, sub_progress(progress, 0.0, far ? 0.3 : 1.0));
-    if (far) {
+    if (!far) {
+      value_ = filled(mean, 0.0, params, progress);
+    } else {
       // Each void's blend of the two surfaces: one weight per void, so the
       // fill stays as smooth as either inside it, and both agree with the
       // known points around it.
-      const std::vector<double> tense =
-          filled(mean, full_tension(stride_), params, sub_progress(progress, 0.3, 1.0));
+      const std::vector<double> tense = plain_and_tense(mean, params, progress, threads);
       for (std::size_t i = 0; i < value_.size(); ++i) value_[i] += weight[i] * (tense[i] - value_[i]);
     }
   }

@@ -59,15 +59,15 @@ std::vector<Domain> find_domains(const Whole& r) {
 // raster only: whichever field builds it, the pins are the same.
 class DeepGuide {
  public:
-  DeepGuide(const Whole& r, const FillParams& params)
-      : r_(r), params_(params), stride_(std::max(kMinGuideStride, guide_stride(r.w, r.h))) {}
+  DeepGuide(const Whole& r, const FillParams& params, int threads)
+      : r_(r), params_(params), threads_(threads), stride_(std::max(kMinGuideStride, guide_stride(r.w, r.h))) {}
   double radius() const { return kGuideRadiusStrides * stride_; }
   int stride_if_built() const { return guide_.ready() ? stride_ : 0; }
   const CoarseGuide* get() {
     std::call_once(built_, [this] {
       guide_ = CoarseGuide(r_.w, r_.h, stride_);
       guide_.add_rows(0, r_.h, r_.z.data(), r_.valid.data());
-      guide_.solve(params_);
+      guide_.solve(params_, {}, threads_);
     });
     return &guide_;
   }
@@ -75,6 +75,7 @@ class DeepGuide {
  private:
   const Whole& r_;
   const FillParams& params_;
+  int threads_;
   int stride_;
   std::once_flag built_;
   CoarseGuide guide_;
@@ -192,11 +193,11 @@ bool fill_single_field(const RasterAccess& raster, const FillParams& params, con
   FillParams p = params;
   if (p.noise_unit <= 0) p.noise_unit = hi - lo;
   const std::vector<Domain> domains = find_domains(r);
-  DeepGuide dg(r, p);
+  const int threads = effective_threads(tiling.threads);
+  DeepGuide dg(r, p, threads);
   report(progress, 0.05);
-  const std::vector<DomainResult> results = solve_domains(r, domains, dg, p, tiling.max_distance,
-                                                          effective_threads(tiling.threads),
-                                                          sub_progress(progress, 0.05, 0.95));
+  const std::vector<DomainResult> results =
+      solve_domains(r, domains, dg, p, tiling.max_distance, threads, sub_progress(progress, 0.05, 0.95));
   st.guide_stride = dg.stride_if_built();
   // A void reaching far from data needs the guide's tension at a coarse scale
   // and its surface deep inside (one field under tension, solved to the usual

@@ -158,7 +158,7 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
   FillParams p = params;
   if (p.noise_unit <= 0) p.noise_unit = scan.hi - scan.lo;
   if (!single) {
-    guide.solve(p, sub_progress(progress, 0.10, 0.15));
+    guide.solve(p, sub_progress(progress, 0.10, 0.15), effective_threads(tiling.threads));
     stats.guide_stride = guide.stride();
     if (tiling.max_distance > exact_distance_limit(layout)) guide.prepare_distance();
   }

@@ -30,10 +30,10 @@ struct Raster {
       for (int x = cx - r; x <= cx + r; ++x)
         if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) valid[index(x, y)] = 0;
   }
-  mcmd::CoarseGuide guide() const {
+  mcmd::CoarseGuide guide(int threads = 1) const {
     mcmd::CoarseGuide g(w, h, mcmd::guide_stride(w, h));
     g.add_rows(0, h, z.data(), valid.data());
-    EXPECT_TRUE(g.solve(mcmd::FillParams{}));
+    EXPECT_TRUE(g.solve(mcmd::FillParams{}, {}, threads));
     return g;
   }
 };
@@ -72,6 +72,18 @@ TEST(CoarseGuide, FarVoidLevelsOffWhileAnOrdinaryVoidKeepsTheThinPlate) {
     for (int x = 300; x < r.w; ++x) top = std::max(top, g.at(x, y));
   const double known_top = bowl(299, r.h - 1);
   EXPECT_LT(top, known_top + 100.0);
+}
+
+// With two threads the plain and the tensioned surfaces are solved at the
+// same time: the guide must not change by a bit.
+TEST(CoarseGuide, TwoThreadsGiveTheSameGuide) {
+  Raster r;
+  r.punch_disc(100, 150, 16);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 300; x < r.w; ++x) r.valid[r.index(x, y)] = 0;
+  const mcmd::CoarseGuide one = r.guide(1), two = r.guide(2);
+  for (int y = 0; y < r.h; y += 3)
+    for (int x = 0; x < r.w; x += 3) ASSERT_EQ(one.at(x, y), two.at(x, y)) << x << "," << y;
 }
 
 }  // namespace

@@ -50,8 +50,10 @@ class CoarseGuide {
   void add_rows(int y0, int rows, const double* z, const std::uint8_t* valid);
 
   // Fill the lattice (same method as the windows). Returns false, and stays
-  // unusable, when no lattice point is known. Throws Cancelled.
-  bool solve(const FillParams& params, const ProgressFn& progress = {});
+  // unusable, when no lattice point is known. Throws Cancelled. With
+  // threads > 1 the plain and the tensioned surfaces (when a void needs
+  // both) are solved at the same time; the result is the same.
+  bool solve(const FillParams& params, const ProgressFn& progress = {}, int threads = 1);
 
   bool ready() const { return ready_; }
   int stride() const { return stride_; }
@@ -76,6 +78,10 @@ class CoarseGuide {
   // `start` (cw × ch, known points set) filled, under `tension`.
   std::vector<double> filled(const std::vector<double>& start, double tension, const FillParams& params,
                              const ProgressFn& progress) const;
+  // Sets value_ to the plain fill of `mean` and returns its fill under full
+  // tension, on two threads when threads > 1.
+  std::vector<double> plain_and_tense(const std::vector<double>& mean, const FillParams& params,
+                                      const ProgressFn& progress, int threads);
   // Per lattice point: far_void_weight of its void (8-connected unknown
   // points; 0 at known points), distances measured on the lattice.
   std::vector<double> far_void_weights() const;
