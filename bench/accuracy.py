@@ -62,8 +62,8 @@ def parse_args(argv=None):
                     help="skip the two extra 1025^2 crops of the 3\" mosaic")
     ap.add_argument("--no-real", action="store_true", help="skip the real-void SRTM tiles")
     ap.add_argument("--timeout", type=float, default=600, help="per-run timeout, s (600)")
-    ap.add_argument("--repeat", type=int, default=3,
-                    help="runs per fill; the median wall time is reported (3)")
+    ap.add_argument("--repeat", type=int, default=5,
+                    help="runs per fill, the methods of a case in interleaved rounds; the median wall time is reported (5)")
     ap.add_argument("--work", default=None,
                     help="work folder (default bench/work/accuracy, or bench/work/accuracy-quick)")
     ap.add_argument("--out", default=None, help="markdown file (default bench/ACCURACY.md)")
@@ -154,13 +154,18 @@ def main(argv=None):
         def evaluate(out_path, removed=removed, truth=truth, inr=inr):
             return V.score_fill(out_path, inr, removed, truth)
 
+        specs = []
         for m in methods:
             out = os.path.join(work, "out", f"{cid}__{m}.tif")
             cmd = V.fill_cmd(m, inp, out, max(w, h), a.mcmd, seed=seed)
             res = os.path.join(work, "results", f"{cid}__{m}.json")
-            results[(cid, m)] = V.cached_fill(res, cmd, run_key, out, a.timeout, evaluate,
-                                              force=a.force, log=log, repeat=a.repeat,
-                                              mem_limit_mb=a.mem_limit_mb or None)
+            specs.append(V.FillSpec(res, cmd, out, a.timeout, evaluate))
+        # Every method of the case in interleaved rounds (GDAL included), so
+        # that time ratios compare runs of the same minutes.
+        for m, r in zip(methods, V.cached_fills(specs, run_key, force=a.force, log=log,
+                                                repeat=a.repeat,
+                                                mem_limit_mb=a.mem_limit_mb or None)):
+            results[(cid, m)] = r
 
     pngs = {} if a.no_png else make_pngs(a, cases, methods, work)
     write_report(a, cases, methods, skipped, results, pngs, msg if not ok else None,
@@ -240,8 +245,9 @@ def write_report(a, cases, methods, skipped, results, pngs, mcmd_msg, elapsed):
              "Laplacian of the fill ÷ the same for the truth (1 = as rough as the terrain, "
              "0.2 = much too smooth); **slope** = mean gradient magnitude of the fill ÷ truth. "
              "Ratios \"/gdal\" are to `gdal_fillnodata.py -md max(W,H) -si 2` on the same case; "
-             "**time** is whole-process wall time (median of `--repeat` runs; peak RSS from "
-             "`/usr/bin/time -v`), file I/O included.")
+             "**time** is whole-process wall time (median of `--repeat` runs, the methods of a "
+             "case run in interleaved rounds so that mcmd and GDAL are timed in the same "
+             "minutes; peak RSS from `/usr/bin/time -v`), file I/O included.")
     L.append("")
     mlist = methods + [m for m in skipped if m not in methods]
 

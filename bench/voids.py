@@ -733,42 +733,72 @@ def cached_fill(res_path: str, cmd: list[str], key: str, out_path: str,
     are cached too (they are redone when the key changes or with force).
     With ``repeat`` > 1 the command is run that many times (stopping at the
     first failure): wall_s is the median, rss_mb the maximum, walls all."""
-    full_key = key + " | " + " ".join(str(c) for c in cmd)
-    old = load_json(res_path)
-    if old and not force and old.get("key") == full_key:
-        return old
-    log(f"    run: {' '.join(str(c) for c in cmd)}" + (f"  (x{repeat})" if repeat > 1 else ""))
-    tries = []
+    return cached_fills([FillSpec(res_path, cmd, out_path, timeout, evaluate)], key,
+                        force=force, log=log, repeat=repeat, mem_limit_mb=mem_limit_mb)[0]
+
+
+class FillSpec:
+    """One fill of a case for cached_fills: where its result is cached, its
+    command, its output and how it is scored."""
+
+    def __init__(self, res_path: str, cmd: list[str], out_path: str,
+                 timeout: float | None, evaluate):
+        self.res_path, self.cmd, self.out_path = res_path, cmd, out_path
+        self.timeout, self.evaluate = timeout, evaluate
+
+    def full_key(self, key: str) -> str:
+        return key + " | " + " ".join(str(c) for c in self.cmd)
+
+
+def cached_fills(specs: list[FillSpec], key: str, force: bool = False, log=print,
+                 repeat: int = 1, mem_limit_mb: float | None = None) -> list[dict]:
+    """The fills of one case (cached_fill for each), timed together: when any
+    of them has to run, all of them run, in ``repeat`` interleaved rounds
+    (A B C, A B C, ...), so that the times compared (mcmd vs GDAL) come from
+    the same minutes of the same machine, not from different runs or from a
+    drift between back-to-back repeats of one tool."""
+    cached = [load_json(sp.res_path) for sp in specs]
+    if not force and all(c and c.get("key") == sp.full_key(key) for c, sp in zip(cached, specs)):
+        return cached
+    for sp in specs:
+        log(f"    run: {' '.join(str(c) for c in sp.cmd)}" + (f"  (x{repeat}, interleaved)" if repeat > 1 else ""))
+    tries: list[list[dict]] = [[] for _ in specs]
     for _ in range(max(1, repeat)):
-        if os.path.exists(out_path):
-            os.unlink(out_path)
-        r = run_timed(cmd, timeout=timeout, mem_limit_mb=mem_limit_mb)
-        tries.append(r)
-        if r["timed_out"] or r["rc"] != 0:
-            break
-    if len(tries) > 1 and all(t["rc"] == 0 for t in tries):
+        for sp, t in zip(specs, tries):
+            if t and (t[-1]["timed_out"] or t[-1]["rc"] != 0):
+                continue  # stopped at its first failure
+            if os.path.exists(sp.out_path):
+                os.unlink(sp.out_path)
+            t.append(run_timed(sp.cmd, timeout=sp.timeout, mem_limit_mb=mem_limit_mb))
+    return [_finish(sp, sp.full_key(key), t, log, mem_limit_mb) for sp, t in zip(specs, tries)]
+
+
+def _finish(sp: FillSpec, full_key: str, tries: list[dict], log, mem_limit_mb) -> dict:
+    """Aggregate the tries of one fill (median wall time, max RSS), score the
+    output, cache and return the result."""
+    r = dict(tries[-1])
+    if len(tries) > 1 and all(t["rc"] == 0 and not t["timed_out"] for t in tries):
         walls = [t["wall_s"] for t in tries]
-        r = dict(tries[-1])
         r["walls"] = walls
         r["wall_s"] = float(np.median(walls))
         r["rss_mb"] = max(t.get("rss_mb", 0) for t in tries)
     r["key"] = full_key
-    r["ok"] = (not r["timed_out"]) and r["rc"] == 0 and os.path.exists(out_path)
+    r["ok"] = (not r["timed_out"]) and r["rc"] == 0 and os.path.exists(sp.out_path)
     if r["ok"]:
         try:
-            r.update(evaluate(out_path))
+            r.update(sp.evaluate(sp.out_path))
         except Exception as e:  # noqa: BLE001
             r["ok"] = False
             r["error"] = f"evaluation failed: {e}"
     elif r["timed_out"]:
-        r["error"] = f"timeout > {timeout:.0f} s"
+        r["error"] = f"timeout > {sp.timeout:.0f} s"
     else:
         tail = (r.get("stderr") or "").strip().splitlines()
         r["error"] = f"rc={r['rc']}: " + (tail[-1] if tail else "no output")
         if mem_limit_mb:
             r["error"] += f" (address-space limit {mem_limit_mb:.0f} MB)"
     r["when"] = time.strftime("%Y-%m-%d %H:%M:%S")
-    save_json(res_path, r)
+    save_json(sp.res_path, r)
     status = "ok" if r["ok"] else r.get("error", "failed")
     extra = f", rmse {r['rmse']:.3f}" if r.get("rmse") is not None else ""
     log(f"      {status}: {r['wall_s']:.2f} s, {r.get('rss_mb', 0):.0f} MB{extra}")
