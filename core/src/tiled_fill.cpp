@@ -121,6 +121,7 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
   const TileLayout layout(raster.width, raster.height,
                           effective_tile_side(raster.width, raster.height, tiling.tile_side));
   const bool single = layout.tile_count() == 1;
+  const int threads = effective_threads(tiling.threads);
   CoarseGuide guide;
   if (!single) guide = CoarseGuide(raster.width, raster.height, guide_stride(raster.width, raster.height));
   TiledFillStats stats;
@@ -158,7 +159,7 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
   FillParams p = params;
   if (p.noise_unit <= 0) p.noise_unit = scan.hi - scan.lo;
   if (!single) {
-    guide.solve(p, sub_progress(progress, 0.10, 0.15), effective_threads(tiling.threads));
+    guide.solve(p, sub_progress(progress, 0.10, 0.15), threads);
     stats.guide_stride = guide.stride();
     if (tiling.max_distance > exact_distance_limit(layout)) guide.prepare_distance();
   }
@@ -203,7 +204,6 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
       if (check.size() != N || check[i] != i) throw std::invalid_argument("reorder hook must return a permutation");
   }
 
-  const int threads = effective_threads(tiling.threads);
   // Windows read but not yet blended: bounds memory to a few windows per thread.
   const std::size_t limit = hooks.reorder ? N : static_cast<std::size_t>(threads) + 1;
   const int nx = layout.x.count();
