@@ -724,19 +724,6 @@ def save_json(path, obj):
 # resumable runs
 # --------------------------------------------------------------------------
 
-def cached_fill(res_path: str, cmd: list[str], key: str, out_path: str,
-                timeout: float | None, evaluate, force: bool = False,
-                log=print, repeat: int = 1, mem_limit_mb: float | None = None) -> dict:
-    """Run one fill unless ``res_path`` already holds a result with the same
-    ``key`` (binary hash / GDAL version + command line). ``evaluate(out_path)``
-    returns the metrics dict merged into the result. Failed and timed-out runs
-    are cached too (they are redone when the key changes or with force).
-    With ``repeat`` > 1 the command is run that many times (stopping at the
-    first failure): wall_s is the median, rss_mb the maximum, walls all."""
-    return cached_fills([FillSpec(res_path, cmd, out_path, timeout, evaluate)], key,
-                        force=force, log=log, repeat=repeat, mem_limit_mb=mem_limit_mb)[0]
-
-
 class FillSpec:
     """One fill of a case for cached_fills: where its result is cached, its
     command, its output and how it is scored."""
@@ -752,11 +739,15 @@ class FillSpec:
 
 def cached_fills(specs: list[FillSpec], key: str, force: bool = False, log=print,
                  repeat: int = 1, mem_limit_mb: float | None = None) -> list[dict]:
-    """The fills of one case (cached_fill for each), timed together: when any
-    of them has to run, all of them run, in ``repeat`` interleaved rounds
-    (A B C, A B C, ...), so that the times compared (mcmd vs GDAL) come from
-    the same minutes of the same machine, not from different runs or from a
-    drift between back-to-back repeats of one tool."""
+    """The fills of one case, each cached in its ``res_path`` under ``key``
+    (binary hash / GDAL version) + its command line, ``evaluate(out_path)``
+    merged into its result. When any of them has to run (or with force), all
+    of them run, in ``repeat`` interleaved rounds (A B C, A B C, ...), so that
+    the times compared (mcmd vs GDAL) come from the same minutes of the same
+    machine, not from different runs or from a drift between back-to-back
+    repeats of one tool. A fill stops at its first failure; failed and
+    timed-out runs are cached too. wall_s is the median, rss_mb the maximum,
+    walls all."""
     cached = [load_json(sp.res_path) for sp in specs]
     if not force and all(c and c.get("key") == sp.full_key(key) for c, sp in zip(cached, specs)):
         return cached
