@@ -90,10 +90,16 @@ constexpr double kSlopeReach = 8.0;         // raster cells
 constexpr double kFarVoidCells = 128.0;     // beyond: the guide's surface deep inside, tiles
 constexpr double kTensionFrom = 64.0;       // farthest void cell from data: no tension below
 constexpr double kTensionFull = 256.0;      // full tension above
+// The tensioned surface costs more than the plain one (a padded lattice) and,
+// on a small raster, the time its largest field waits for the guide: a void
+// that would take less than 1 % of it (farthest cell within ~9 cells of
+// kTensionFrom) keeps the plain surface.
+constexpr double kMinTensionWeight = 0.01;
 
 double far_void_weight(double farthest) {
   const double ramp = std::clamp((farthest - kTensionFrom) / (kTensionFull - kTensionFrom), 0.0, 1.0);
-  return ramp * ramp * (3.0 - 2.0 * ramp);
+  const double weight = ramp * ramp * (3.0 - 2.0 * ramp);
+  return weight < kMinTensionWeight ? 0.0 : weight;
 }
 
 bool reaches_far(double farthest) { return farthest > kFarVoidCells; }
