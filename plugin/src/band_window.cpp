@@ -58,6 +58,27 @@ bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win
   return true;
 }
 
+// A float band whose own mask is its nodata value: GDAL's nodata mask band
+// compares each value to the nodata (as the band's type) with ARE_REAL_EQUAL,
+// and NaN to a NaN nodata. The same test here spares the mask band's second
+// read of the window (1027×875 Float32: 19 → 9 ms). GMF_NODATA implies the
+// nodata is in the type's range.
+template <class T>
+bool read_float(GDALRasterBand& band, const PixelType& type, const Window& win, GDALDataType gdt, bool own_mask,
+                double* z, std::uint8_t* valid) {
+  const std::vector<T> raw = read_native<T>(band, win, gdt, z);
+  if (!own_mask || !type.has_nodata || band.GetMaskFlags() != GMF_NODATA) return false;
+  const T nodata = static_cast<T>(type.nodata);
+  if (std::isnan(nodata)) {
+    for (std::size_t i = 0; i < raw.size(); ++i)
+      if (std::isnan(raw[i])) valid[i] = 0;
+  } else {
+    for (std::size_t i = 0; i < raw.size(); ++i)
+      if (!std::isnan(raw[i]) && ARE_REAL_EQUAL(raw[i], nodata)) valid[i] = 0;
+  }
+  return true;
+}
+
 // Reads the values into z; with `own_mask` (the band's own mask is one of
 // the masks asked for) returns true when it also marked that mask's voids
 // in `valid` (the caller then skips it).
@@ -69,7 +90,8 @@ bool read_values(GDALRasterBand& band, const PixelType& type, const Window& win,
     case GDT_UInt16: return read_integer<std::uint16_t>(band, type, win, GDT_UInt16, own_mask, z, valid);
     case GDT_Int32: return read_integer<std::int32_t>(band, type, win, GDT_Int32, own_mask, z, valid);
     case GDT_UInt32: return read_integer<std::uint32_t>(band, type, win, GDT_UInt32, own_mask, z, valid);
-    case GDT_Float32: read_native<float>(band, win, GDT_Float32, z); return false;
+    case GDT_Float32: return read_float<float>(band, type, win, GDT_Float32, own_mask, z, valid);
+    case GDT_Float64: return read_float<double>(band, type, win, GDT_Float64, own_mask, z, valid);
     default: break;
   }
   if (!type.signed_byte) {
