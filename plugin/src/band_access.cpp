@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "band_window.hpp"
 #include "errors.hpp"
@@ -9,17 +10,31 @@
 namespace mcmd::gdal {
 
 BandAccess::BandAccess(GDALRasterBand& source, GDALRasterBand& target, const FillRequest& request)
-    : source_(source),
-      target_(target),
-      request_(request),
-      source_type_(pixel_type_of(source)),
-      target_type_(pixel_type_of(target)),
-      in_place_(&source == &target) {
-  for (GDALRasterBand* mask : request.masks) check_mask_size(*mask, source);
+    : BandAccess(source, [&target]() -> GDALRasterBand& { return target; }, request) {
+  target_ = &target;
+  target_type_ = pixel_type_of(target);
+  in_place_ = &source == &target;
   if (in_place_) {
     const std::size_t cells = static_cast<std::size_t>(source.GetXSize()) * static_cast<std::size_t>(source.GetYSize());
     written_.assign((cells + 63) / 64, 0);
   }
+}
+
+BandAccess::BandAccess(GDALRasterBand& source, TargetBand target, const FillRequest& request)
+    : source_(source),
+      get_target_(std::move(target)),
+      request_(request),
+      source_type_(pixel_type_of(source)),
+      in_place_(false) {
+  for (GDALRasterBand* mask : request.masks) check_mask_size(*mask, source);
+}
+
+GDALRasterBand& BandAccess::target() {
+  if (!target_) {
+    target_ = &get_target_();
+    target_type_ = pixel_type_of(*target_);
+  }
+  return *target_;
 }
 
 bool BandAccess::nodata_marks_voids() const {
@@ -48,9 +63,10 @@ void BandAccess::read(int x0, int y0, int w, int h, double* z, std::uint8_t* val
 }
 
 void BandAccess::write(int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
+  GDALRasterBand& out = target();
   const int bytes = GDALGetDataTypeSizeBytes(target_type_.gdt);
   run_.resize(static_cast<std::size_t>(w) * bytes);
-  const std::size_t W = static_cast<std::size_t>(target_.GetXSize());
+  const std::size_t W = static_cast<std::size_t>(out.GetXSize());
   for (int r = 0; r < h; ++r) {
     const std::size_t base = static_cast<std::size_t>(r) * w;
     for (int c = 0; c < w;) {
@@ -61,7 +77,7 @@ void BandAccess::write(int x0, int y0, int w, int h, const double* z, const std:
       int end = c;
       while (end < w && mask[base + end]) ++end;
       encode(target_type_, z + base + c, static_cast<std::size_t>(end - c), run_.data());
-      if (target_.RasterIO(GF_Write, x0 + c, y0 + r, end - c, 1, run_.data(), end - c, 1, target_type_.gdt, 0, 0,
+      if (out.RasterIO(GF_Write, x0 + c, y0 + r, end - c, 1, run_.data(), end - c, 1, target_type_.gdt, 0, 0,
                            nullptr) != CE_None) {
         const std::string detail = CPLGetLastErrorMsg();
         throw Failure(CPLE_FileIO, "cannot write the filled cells" + (detail.empty() ? "" : ": " + detail));

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "fill_band.hpp"
@@ -19,6 +20,9 @@ class BandAccess {
  public:
   // Throws Failure for a mask whose size differs from the band's.
   BandAccess(GDALRasterBand& source, GDALRasterBand& target, const FillRequest& request);
+  // A target that may not exist yet (a copy still being made): asked for at
+  // the first write, never the source itself.
+  BandAccess(GDALRasterBand& source, TargetBand target, const FillRequest& request);
   BandAccess(const BandAccess&) = delete;
   BandAccess& operator=(const BandAccess&) = delete;
 
@@ -33,8 +37,11 @@ class BandAccess {
   void write(int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask);
   bool was_written(std::size_t cell) const { return (written_[cell >> 6] >> (cell & 63)) & 1u; }
 
+  GDALRasterBand& target();
+
   GDALRasterBand& source_;
-  GDALRasterBand& target_;
+  TargetBand get_target_;
+  GDALRasterBand* target_ = nullptr;  // once asked for
   const FillRequest& request_;
   PixelType source_type_;
   PixelType target_type_;

@@ -7,6 +7,8 @@
 
 #include "cpl_string.h"
 #include "cpl_vsi.h"
+#include "background_copy.hpp"
+#include "dataset.hpp"
 #include "errors.hpp"
 #include "fill_band.hpp"
 #include "output_file.hpp"
@@ -18,11 +20,6 @@ using gdal::Failure;
 namespace {
 
 volatile std::sig_atomic_t g_interrupted = 0;
-
-struct DatasetCloser {
-  void operator()(GDALDataset* ds) const { GDALClose(GDALDataset::ToHandle(ds)); }
-};
-using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
 
 // A slice [lo, hi] of the user's progress bar that also honours SIGINT.
 struct ProgressSlice {
@@ -111,6 +108,27 @@ void clear_statistics(GDALRasterBand& band) {
 // Fill the selected bands of `target`; voids and known cells are read from
 // `source` (== target in place), filled cells written to `target`.
 void fill_bands(GDALDataset& target, GDALDataset& source, const std::vector<int>& bands, GDALRasterBand* file_mask,
+                const Args& args, const ProgressSlice& slice);
+
+// The same, the target a copy still being made (never the source itself):
+// each band asks for it at its first write.
+void fill_bands(BackgroundCopy& target, GDALDataset& source, const std::vector<int>& bands,
+                GDALRasterBand* file_mask, const Args& args, const ProgressSlice& slice) {
+  CPLStringList list;
+  for (const std::string& o : args.fill_options) list.AddString(o.c_str());
+  const gdal::Options options = gdal::parse_options(list.List());
+  for (std::size_t i = 0; i < bands.size(); ++i) {
+    const int b = bands[i];
+    const gdal::FillRequest req = request_for(source, b, file_mask, args);
+    const double w = (slice.hi - slice.lo) / static_cast<double>(bands.size());
+    const ProgressSlice part{slice.fn, slice.lo + w * i, slice.lo + w * (i + 1)};
+    const gdal::TargetBand band = [&target, b]() -> GDALRasterBand& { return *target.dataset().GetRasterBand(b); };
+    gdal::fill_band(band, *source.GetRasterBand(b), req, options, part.as_fn());
+    clear_statistics(band());
+  }
+}
+
+void fill_bands(GDALDataset& target, GDALDataset& source, const std::vector<int>& bands, GDALRasterBand* file_mask,
                 const Args& args, const ProgressSlice& slice) {
   CPLStringList list;
   for (const std::string& o : args.fill_options) list.AddString(o.c_str());
@@ -163,17 +181,6 @@ CPLStringList creation_options(const Args& args, GDALDriver* driver, ErrorLog& l
   return co;
 }
 
-// What a MEM CreateCopy does not carry over: description, unit, offset/scale.
-void copy_band_info(GDALRasterBand& from, GDALRasterBand& to) {
-  to.SetDescription(from.GetDescription());
-  if (const char* unit = from.GetUnitType(); unit && *unit) to.SetUnitType(unit);
-  int has = FALSE;
-  const double offset = from.GetOffset(&has);
-  if (has) to.SetOffset(offset);
-  const double scale = from.GetScale(&has);
-  if (has) to.SetScale(scale);
-}
-
 DatasetPtr create_copy(GDALDriver* driver, const std::string& path, GDALDataset& from, CSLConstList co,
                        ErrorLog& log, const ProgressSlice& slice, const std::string& shown) {
   log.reset();
@@ -204,6 +211,13 @@ bool fill_output_directly(GDALDriver* driver, const CPLStringList& co) {
   return !compress || EQUAL(compress, "NONE");
 }
 
+// A raster small enough for the fill to read whole once and write at the end
+// (the core's small-raster path): its copy is made while the fill works.
+bool copy_in_background(GDALDataset& src) {
+  constexpr long long kMaxCells = 1LL << 21;
+  return static_cast<long long>(src.GetRasterXSize()) * src.GetRasterYSize() <= kMaxCells;
+}
+
 void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   DatasetPtr src = open_raster(args.src, true, "raster");
   const std::vector<int> bands = select_bands(*src, args.bands);
@@ -219,7 +233,10 @@ void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
 // The source is read block by block and never held in memory: the output is
 // a streamed copy of it (or a work GeoTIFF copy) whose void cells are filled
 // in place. An uncompressed GeoTIFF copy is read back by the fill (cheaper
-// than decoding a compressed source twice), and so is the work copy.
+// than decoding a compressed source twice), and so is the work copy. A small
+// raster (read whole once, written at the end) is the exception: the fill
+// reads the source while the copy is made on a second thread (BackgroundCopy),
+// whose two decodes run side by side instead of one after the other.
 void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   DatasetPtr src = open_raster(args.src, false, "raster");
   const std::vector<int> bands = select_bands(*src, args.bands);
@@ -228,7 +245,12 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   GDALDriver* driver = output_driver(args);
   const CPLStringList co = creation_options(args, driver, log);
   TempOutput out(args.dst, driver);
-  if (fill_output_directly(driver, co)) {
+  if (fill_output_directly(driver, co) && copy_in_background(*src)) {
+    BackgroundCopy dst(driver, args.src, out.path(), co, args.dst, [] { return g_interrupted == 0; });
+    log.reset();
+    fill_bands(dst, *src, bands, mask, args, ProgressSlice{progress, 0.0, 1.0});
+    dst.close();  // waits for a copy that had nothing to fill, flushes
+  } else if (fill_output_directly(driver, co)) {
     DatasetPtr dst = create_copy(driver, out.path(), *src, co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
     dst = reopen_for_update(std::move(dst), out.path(), args.dst);
     // The fill reads the copy (uncompressed, unlike most sources): it must be whole.

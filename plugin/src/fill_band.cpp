@@ -50,9 +50,10 @@ void check_band(GDALRasterBand& band, const FillRequest& request) {
   if (voids == static_cast<std::size_t>(W) * static_cast<std::size_t>(H)) fail_no_valid(request);
 }
 
-void fill_band(GDALRasterBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
-               const ProgressFn& progress) {
-  BandAccess band(source, target, request);
+namespace {
+
+void fill_band_access(BandAccess& band, const FillRequest& request, const Options& options,
+                      const ProgressFn& progress) {
   TilingParams tiling;
   tiling.tile_side = options.tile_size;
   tiling.always_tile = options.always_tile;
@@ -76,6 +77,20 @@ void fill_band(GDALRasterBand& target, GDALRasterBand& source, const FillRequest
   // Nothing was written when no cell is void.
   if (request.require_void_marker && !marked && stats.void_cells == 0) fail_unmarked(request);
   report(progress, 1.0);
+}
+
+}  // namespace
+
+void fill_band(GDALRasterBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
+               const ProgressFn& progress) {
+  BandAccess band(source, target, request);
+  fill_band_access(band, request, options, progress);
+}
+
+void fill_band(const TargetBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
+               const ProgressFn& progress) {
+  BandAccess band(source, target, request);
+  fill_band_access(band, request, options, progress);
 }
 
 void fill_band(GDALRasterBand& band, const FillRequest& request, const Options& options, const ProgressFn& progress) {

@@ -3,6 +3,7 @@
 // cells only; memory bounded by the tile size and thread count.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "gdal_priv.h"
@@ -32,6 +33,12 @@ void check_band(GDALRasterBand& band, const FillRequest& request);
 // Cancelled, OptionError, std::invalid_argument, std::bad_alloc.
 // A band with no void cell is left untouched.
 void fill_band(GDALRasterBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
+               const ProgressFn& progress);
+
+// The target band as a function called at the first write (it may wait for
+// a copy being made), for a target that is not the source.
+using TargetBand = std::function<GDALRasterBand&()>;
+void fill_band(const TargetBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
                const ProgressFn& progress);
 
 // In place: fill_band(band, band, ...).
