@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <deque>
 #include <exception>
 #include <mutex>
 #include <stdexcept>
@@ -52,6 +53,10 @@ std::vector<Domain> find_domains(const Whole& r) {
   return out;
 }
 
+// Thrown by DeepGuide::get to a caller that can do other work meanwhile,
+// while another thread builds the guide.
+struct GuideBusy {};
+
 // The coarse guide, built by the first field that has a cell farther than the
 // guide radius from data (none in most rasters: the 3 %-kept benchmark's
 // longest void runs exceed twice the radius, its distances never do). Its
@@ -63,21 +68,29 @@ class DeepGuide {
       : r_(r), params_(params), threads_(threads), stride_(std::max(kMinGuideStride, guide_stride(r.w, r.h))) {}
   double radius() const { return kGuideRadiusStrides * stride_; }
   int stride_if_built() const { return guide_.ready() ? stride_ : 0; }
-  const CoarseGuide* get() {
+  bool busy() const { return state_.load() == State::building; }
+  // With `may_defer`, throws GuideBusy instead of waiting for another
+  // thread's build.
+  const CoarseGuide* get(bool may_defer) {
+    if (may_defer && busy()) throw GuideBusy{};
     std::call_once(built_, [this] {
+      state_ = State::building;
       guide_ = CoarseGuide(r_.w, r_.h, stride_);
       guide_.add_rows(0, r_.h, r_.z.data(), r_.valid.data());
       guide_.solve(params_, {}, threads_);
+      state_ = State::ready;
     });
     return &guide_;
   }
 
  private:
+  enum class State { none, building, ready };
   const Whole& r_;
   const FillParams& params_;
   int threads_;
   int stride_;
   std::once_flag built_;
+  std::atomic<State> state_{State::none};
   CoarseGuide guide_;
 };
 
@@ -85,7 +98,7 @@ class DeepGuide {
 // surface is the coarse guide's, as in tiles (docs/tiling.md): without it, the
 // fill of a large void depended on how much terrain its field held (the
 // cascade's coarse levels), with it on the void's own surroundings.
-DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, const FillParams& params,
+DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, bool may_defer, const FillParams& params,
                           double max_distance, const ProgressFn& progress, int threads) {
   std::vector<double> z;
   std::vector<std::uint8_t> valid;
@@ -96,9 +109,51 @@ DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, const 
     z.insert(z.end(), r.z.begin() + from, r.z.begin() + to);
     valid.insert(valid.end(), r.valid.begin() + from, r.valid.begin() + to);
   }
-  return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), DeepPins{[&dg] { return dg.get(); }, dg.radius()},
+  return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), DeepPins{[&dg, may_defer] { return dg.get(may_defer); }, dg.radius()},
                           params, max_distance, progress, threads);
 }
+
+// Hands out the domains, largest first, so that the last ones to finish are
+// small. A domain set aside because another thread was building the guide it
+// needs (GuideBusy: waiting left a core idle for the guide's ~20 ms on a
+// 1201² raster) comes back once the guide is ready, or when nothing else is
+// left (its solve then waits). Results do not depend on the order.
+class DomainQueue {
+ public:
+  DomainQueue(const std::vector<Domain>& domains, const DeepGuide& dg) : dg_(dg), order_(domains.size()) {
+    for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = i;
+    const auto area = [&](std::size_t k) {
+      return static_cast<long long>(domains[k].rect.width()) * domains[k].rect.height();
+    };
+    std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) { return area(a) > area(b); });
+  }
+  // The next domain, and whether its solve may throw GuideBusy; false when
+  // none is left.
+  bool next(std::size_t& domain, bool& may_defer) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!deferred_.empty() && (!dg_.busy() || next_ == order_.size())) {
+      domain = deferred_.front();
+      deferred_.pop_front();
+      may_defer = false;
+      return true;
+    }
+    if (next_ == order_.size()) return false;
+    domain = order_[next_++];
+    may_defer = true;
+    return true;
+  }
+  void defer(std::size_t domain) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    deferred_.push_back(domain);
+  }
+
+ private:
+  const DeepGuide& dg_;
+  std::vector<std::size_t> order_;
+  std::size_t next_ = 0;
+  std::deque<std::size_t> deferred_;
+  std::mutex mutex_;
+};
 
 // Solves every domain, on `threads` threads (the calling one included, which
 // alone reports progress). Each result depends on its domain only.
@@ -107,25 +162,22 @@ std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain
                                         const ProgressFn& progress) {
   std::vector<DomainResult> results(domains.size());
   std::vector<std::exception_ptr> errors(domains.size());
-  // Largest fields first, so that the last ones to finish are small ones.
-  std::vector<std::size_t> order(domains.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  const auto area = [&](std::size_t k) {
-    return static_cast<long long>(domains[k].rect.width()) * domains[k].rect.height();
-  };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return area(a) > area(b); });
-  std::atomic<std::size_t> next{0}, done{0};
+  DomainQueue queue(domains, dg);
+  std::atomic<std::size_t> done{0};
   std::atomic<bool> cancel{false};
   const ProgressFn worker_progress = [&cancel](double) { return !cancel.load(std::memory_order_relaxed); };
   const auto work = [&](bool main) {
-    for (std::size_t n; (n = next.fetch_add(1)) < domains.size();) {
-      const std::size_t i = order[n];
+    std::size_t i = 0;
+    for (bool may_defer = false; queue.next(i, may_defer);) {
       try {
         // A lone domain is solved on the calling thread with the real progress
         // and every thread inside its solver.
         const bool lone = domains.size() == 1;
         const ProgressFn& p = main && lone ? progress : worker_progress;
-        results[i] = solve_domain(r, domains[i], dg, params, max_distance, p, lone ? threads : 1);
+        results[i] = solve_domain(r, domains[i], dg, may_defer, params, max_distance, p, lone ? threads : 1);
+      } catch (const GuideBusy&) {
+        queue.defer(i);
+        continue;
       } catch (...) {
         errors[i] = std::current_exception();
         cancel = true;

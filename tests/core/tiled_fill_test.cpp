@@ -620,6 +620,25 @@ TEST(TiledFill, SmallRasterBuildsTheGuideOnlyForDeepVoids) {
   EXPECT_EQ(small_raster_guide_stride(r), 4);
 }
 
+// Fields that need the guide while another thread builds it are set aside
+// and solved once it is ready (single_field.cpp, DomainQueue): many deep and
+// neighbouring voids give the same bits on 1, 2 and 4 threads.
+TEST(TiledFill, FieldsWaitingForTheGuideGiveTheSameBits) {
+  MemRaster r = terrain_raster(600, 500);
+  for (int k = 0; k < 6; ++k) {
+    punch_disc(r, 80 + 90 * k, 120 + 40 * (k % 3), 38);  // deep: centres 38 cells from data
+    punch_disc(r, 80 + 90 * k + 44, 120 + 40 * (k % 3), 3);  // beside it: its cells pinned
+    punch_disc(r, 60 + 90 * k, 380, 6 + k);
+  }
+  Recorded rec;
+  const std::vector<double> one = run(r, 0, 1, rec.hooks);
+  EXPECT_EQ(rec.stats.tile_side, 0);
+  EXPECT_EQ(rec.stats.guide_stride, 4);
+  EXPECT_TRUE(r.complete());
+  EXPECT_TRUE(bit_identical(run(r, 0, 2), one));
+  EXPECT_TRUE(bit_identical(run(r, 0, 4), one));
+}
+
 // A small void beside a larger one: the small void's field holds more of its
 // neighbour's cells than its own, so those are pinned to the coarse guide
 // (built although no cell is deep) instead of being solved a second time.
