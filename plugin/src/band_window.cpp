@@ -61,8 +61,7 @@ bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win
 // A float band whose own mask is its nodata value: GDAL's nodata mask band
 // compares each value to the nodata (as the band's type) with ARE_REAL_EQUAL,
 // and NaN to a NaN nodata. The same test here spares the mask band's second
-// read of the window. GMF_NODATA implies the
-// nodata is in the type's range.
+// read of the window. GMF_NODATA implies the nodata is in the type's range.
 template <class T>
 bool read_float(GDALRasterBand& band, const PixelType& type, const Window& win, GDALDataType gdt, bool own_mask,
                 double* z, std::uint8_t* valid) {
