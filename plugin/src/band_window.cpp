@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "errors.hpp"
 
@@ -65,14 +66,24 @@ bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win
 template <class T>
 bool read_float(GDALRasterBand& band, const PixelType& type, const Window& win, GDALDataType gdt, bool own_mask,
                 double* z, std::uint8_t* valid) {
-  const std::vector<T> raw = read_native<T>(band, win, gdt, z);
+  std::vector<T> native;
+  const T* raw = nullptr;
+  if constexpr (std::is_same_v<T, double>) {  // straight into z: nothing to widen
+    check_io(band.RasterIO(GF_Read, win.x, win.y, win.w, win.h, z, win.w, win.h, gdt, 0, 0, nullptr),
+             "cannot read the band");
+    raw = z;
+  } else {
+    native = read_native<T>(band, win, gdt, z);
+    raw = native.data();
+  }
   if (!own_mask || !type.has_nodata || band.GetMaskFlags() != GMF_NODATA) return false;
   const T nodata = static_cast<T>(type.nodata);
+  const std::size_t n = win.cells();
   if (std::isnan(nodata)) {
-    for (std::size_t i = 0; i < raw.size(); ++i)
+    for (std::size_t i = 0; i < n; ++i)
       if (std::isnan(raw[i])) valid[i] = 0;
   } else {
-    for (std::size_t i = 0; i < raw.size(); ++i)
+    for (std::size_t i = 0; i < n; ++i)
       if (!std::isnan(raw[i]) && ARE_REAL_EQUAL(raw[i], nodata)) valid[i] = 0;
   }
   return true;
