@@ -13,7 +13,7 @@ namespace mcmd::detail {
 
 // 2^21 cells (e.g. 1448²): about 250 MB at the solver's ~120 bytes per cell,
 // the peak of the tiled fill on large rasters.
-constexpr std::size_t kSingleFieldMaxCells = std::size_t{1} << 21;
+constexpr std::size_t kSingleFieldMaxCells = kWholeRasterMaxCells;
 
 // The default method (smooth or with roughness: rs, rs auto), tiles not forced
 // (TilingParams::always_tile) and a raster of at most kSingleFieldMaxCells

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <exception>
 #include <functional>
 #include <string>
 #include <thread>
@@ -27,16 +28,15 @@ class BackgroundCopy {
   ~BackgroundCopy();  // an unfinished copy is stopped; either way the thread is joined
 
   // Waits for the copy and returns it, open for update, its band info
-  // (copy_band_info) set. Throws gdal::Failure ("cannot write ...") when the
-  // copy failed, or CPLE_UserInterrupt when it was stopped.
+  // (copy_band_info) set. Rethrows what the copy threw (create_copy's
+  // gdal::Failure: "cannot write ...", or cancelled).
   GDALDataset& dataset();
 
-  // dataset(), then closes it (flushing). Throws gdal::Failure if that fails.
+  // dataset(), then closes it (flushing).
   void close();
 
  private:
   void run();
-  void join();
 
   GDALDriver* driver_;
   std::string source_path_, path_, shown_;
@@ -44,8 +44,7 @@ class BackgroundCopy {
   std::function<bool()> keep_going_;
   std::atomic<bool> stop_{false};
   DatasetPtr out_;
-  std::string error_;
-  bool cancelled_ = false;
+  std::exception_ptr failed_;
   std::thread thread_;
 };
 

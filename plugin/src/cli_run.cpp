@@ -11,6 +11,7 @@
 #include "dataset.hpp"
 #include "errors.hpp"
 #include "fill_band.hpp"
+#include "mcmd/tiled_fill.hpp"
 #include "output_file.hpp"
 
 namespace mcmd::cli {
@@ -105,42 +106,29 @@ void clear_statistics(GDALRasterBand& band) {
   if (dropped) band.SetMetadata(kept.List());
 }
 
-// Fill the selected bands of `target`; voids and known cells are read from
-// `source` (== target in place), filled cells written to `target`.
-void fill_bands(GDALDataset& target, GDALDataset& source, const std::vector<int>& bands, GDALRasterBand* file_mask,
-                const Args& args, const ProgressSlice& slice);
-
-// The same, the target a copy still being made (never the source itself):
-// each band asks for it at its first write.
-void fill_bands(BackgroundCopy& target, GDALDataset& source, const std::vector<int>& bands,
-                GDALRasterBand* file_mask, const Args& args, const ProgressSlice& slice) {
+// Fill the selected bands of `source`: in place (`copy` null) or into a copy
+// still being made, which each band asks for at its first write.
+void fill_bands(GDALDataset& source, BackgroundCopy* copy, const std::vector<int>& bands, GDALRasterBand* file_mask,
+                const Args& args, const ProgressSlice& slice) {
   CPLStringList list;
   for (const std::string& o : args.fill_options) list.AddString(o.c_str());
   const gdal::Options options = gdal::parse_options(list.List());
+  if (!copy && bands.size() > 1)  // in place: refuse before writing anything
+    for (int b : bands) gdal::check_band(*source.GetRasterBand(b), request_for(source, b, file_mask, args));
   for (std::size_t i = 0; i < bands.size(); ++i) {
     const int b = bands[i];
     const gdal::FillRequest req = request_for(source, b, file_mask, args);
     const double w = (slice.hi - slice.lo) / static_cast<double>(bands.size());
     const ProgressSlice part{slice.fn, slice.lo + w * i, slice.lo + w * (i + 1)};
-    const gdal::TargetBand band = [&target, b]() -> GDALRasterBand& { return *target.dataset().GetRasterBand(b); };
-    gdal::fill_band(band, *source.GetRasterBand(b), req, options, part.as_fn());
-    clear_statistics(band());
-  }
-}
-
-void fill_bands(GDALDataset& target, GDALDataset& source, const std::vector<int>& bands, GDALRasterBand* file_mask,
-                const Args& args, const ProgressSlice& slice) {
-  CPLStringList list;
-  for (const std::string& o : args.fill_options) list.AddString(o.c_str());
-  const gdal::Options options = gdal::parse_options(list.List());
-  if (&target == &source && bands.size() > 1)  // in place: refuse before writing anything
-    for (int b : bands) gdal::check_band(*source.GetRasterBand(b), request_for(source, b, file_mask, args));
-  for (std::size_t i = 0; i < bands.size(); ++i) {
-    const gdal::FillRequest req = request_for(source, bands[i], file_mask, args);
-    const double w = (slice.hi - slice.lo) / static_cast<double>(bands.size());
-    const ProgressSlice part{slice.fn, slice.lo + w * i, slice.lo + w * (i + 1)};
-    gdal::fill_band(*target.GetRasterBand(bands[i]), *source.GetRasterBand(bands[i]), req, options, part.as_fn());
-    clear_statistics(*target.GetRasterBand(bands[i]));
+    GDALRasterBand& band = *source.GetRasterBand(b);
+    if (!copy) {
+      gdal::fill_band(band, req, options, part.as_fn());
+      clear_statistics(band);
+      continue;
+    }
+    const gdal::TargetBand target = [copy, b]() -> GDALRasterBand& { return *copy->dataset().GetRasterBand(b); };
+    gdal::fill_band(target, band, req, options, part.as_fn());
+    clear_statistics(target());
   }
 }
 
@@ -183,24 +171,8 @@ CPLStringList creation_options(const Args& args, GDALDriver* driver, ErrorLog& l
 
 DatasetPtr create_copy(GDALDriver* driver, const std::string& path, GDALDataset& from, CSLConstList co,
                        ErrorLog& log, const ProgressSlice& slice, const std::string& shown) {
-  log.reset();
-  DatasetPtr out(driver->CreateCopy(path.c_str(), &from, FALSE, co, &ProgressSlice::call,
-                                    const_cast<ProgressSlice*>(&slice)));
-  if (!out) {
-    if (CPLGetLastErrorNo() == CPLE_UserInterrupt) throw Failure(CPLE_UserInterrupt, "cancelled by the user");
-    const std::string why = log.first_failure().empty() ? CPLGetLastErrorMsg() : log.first_failure();
-    throw Failure(CPLE_FileIO, "cannot write '" + shown + "': " + why);
-  }
-  return out;
-}
-
-// Reopen a dataset that CreateCopy returned, for update (flushes it first).
-DatasetPtr reopen_for_update(DatasetPtr ds, const std::string& path, const std::string& shown) {
-  ds.reset();
-  CPLErrorReset();
-  DatasetPtr again(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
-  if (!again) throw Failure(CPLE_FileIO, "cannot reopen '" + shown + "' for filling: " + CPLGetLastErrorMsg());
-  return again;
+  return cli::create_copy(driver, path, from, co, log, &ProgressSlice::call, const_cast<ProgressSlice*>(&slice),
+                          shown);
 }
 
 // An uncompressed GeoTIFF output can be filled where it lies; other formats
@@ -214,8 +186,8 @@ bool fill_output_directly(GDALDriver* driver, const CPLStringList& co) {
 // A raster small enough for the fill to read whole once and write at the end
 // (the core's small-raster path): its copy is made while the fill works.
 bool copy_in_background(GDALDataset& src) {
-  constexpr long long kMaxCells = 1LL << 21;
-  return static_cast<long long>(src.GetRasterXSize()) * src.GetRasterYSize() <= kMaxCells;
+  return static_cast<std::size_t>(src.GetRasterXSize()) * static_cast<std::size_t>(src.GetRasterYSize()) <=
+         kWholeRasterMaxCells;
 }
 
 void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
@@ -224,7 +196,7 @@ void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   DatasetPtr mask_ds;
   GDALRasterBand* mask = open_mask(args, *src, mask_ds);
   log.reset();
-  fill_bands(*src, *src, bands, mask, args, ProgressSlice{progress, 0.0, 1.0});
+  fill_bands(*src, nullptr, bands, mask, args, ProgressSlice{progress, 0.0, 1.0});
   src.reset();  // flush
   if (log.failures() != 0)
     throw Failure(CPLE_FileIO, "writing '" + args.src + "' failed (it may be partly filled): " + log.first_failure());
@@ -248,16 +220,16 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   if (fill_output_directly(driver, co) && copy_in_background(*src)) {
     BackgroundCopy dst(driver, args.src, out.path(), co, args.dst, [] { return g_interrupted == 0; });
     log.reset();
-    fill_bands(dst, *src, bands, mask, args, ProgressSlice{progress, 0.0, 1.0});
+    fill_bands(*src, &dst, bands, mask, args, ProgressSlice{progress, 0.0, 1.0});
     dst.close();  // waits for a copy that had nothing to fill, flushes
   } else if (fill_output_directly(driver, co)) {
     DatasetPtr dst = create_copy(driver, out.path(), *src, co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
     dst = reopen_for_update(std::move(dst), out.path(), args.dst);
     // The fill reads the copy (uncompressed, unlike most sources): it must be whole.
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
-    for (int b = 1; b <= src->GetRasterCount(); ++b) copy_band_info(*src->GetRasterBand(b), *dst->GetRasterBand(b));
+    copy_band_info(*src, *dst);
     log.reset();
-    fill_bands(*dst, *dst, bands, mask, args, ProgressSlice{progress, 0.1, 1.0});
+    fill_bands(*dst, nullptr, bands, mask, args, ProgressSlice{progress, 0.1, 1.0});
     dst.reset();  // close: flushes the last blocks
   } else {
     GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
@@ -270,9 +242,9 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     tmp = reopen_for_update(std::move(tmp), work.path(), args.dst);
     // The fill reads the work copy: it must be whole.
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
-    for (int b = 1; b <= src->GetRasterCount(); ++b) copy_band_info(*src->GetRasterBand(b), *tmp->GetRasterBand(b));
+    copy_band_info(*src, *tmp);
     log.reset();
-    fill_bands(*tmp, *tmp, bands, mask, args, ProgressSlice{progress, 0.1, 0.85});
+    fill_bands(*tmp, nullptr, bands, mask, args, ProgressSlice{progress, 0.1, 0.85});
     tmp->FlushCache();
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
     DatasetPtr dst = create_copy(driver, out.path(), *tmp, co.List(), log, ProgressSlice{progress, 0.85, 1.0}, args.dst);

@@ -36,6 +36,11 @@ struct TilingParams {
 
 constexpr int kDefaultTileSide = 129;  // measured: see docs/tiling.md
 
+// With the default method a raster of at most this many cells (2^21, e.g.
+// 1448²) is read whole once, filled without tiles and written at the end
+// (docs/tiling.md, "Small rasters").
+constexpr std::size_t kWholeRasterMaxCells = std::size_t{1} << 21;
+
 // The tile side actually used: `requested` (0 = default), reduced to the
 // smallest 2^k + 1 (k >= 1) that covers max(width, height) when that is smaller.
 // Throws std::invalid_argument when requested is neither 0 nor 2^k + 1.
