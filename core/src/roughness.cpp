@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
 
 #include "mcmd/noise.hpp"
 #include "mcmd/thin_plate.hpp"
@@ -98,11 +101,21 @@ Blocks void_blocks(const RoughField& g) {
   return b;
 }
 
-// One octave: white noise on a rotated lattice of spacing 2^j, interpolated
-// with Catmull-Rom splines, added to `out` at the cells of active blocks. The
-// nodes are a function of global coordinates: any window sees the same field.
-void add_octave(const RoughField& g, const Blocks& blocks, std::uint64_t seed, int j, double weight,
-                std::vector<double>& out) {
+// std::floor for the node coordinates (|v| far below 2^52), without the call
+// to libm that std::floor is on baseline x86-64: 2 per cell and octave.
+long long floor_int(double v) {
+  const auto t = static_cast<long long>(v);  // towards zero
+  return t > v ? t - 1 : t;
+}
+
+// One octave's noise (unweighted) at raster cells [gx0, gx1) × [gy0, gy1):
+// white noise on a lattice of spacing 2^j rotated by j golden angles,
+// interpolated with Catmull-Rom splines; emit(x, y, value) for each cell, in
+// rows. The nodes are a function of global coordinates, so any window, field
+// or block sees the same value at a cell.
+template <class Emit>
+void octave_cells(std::uint64_t seed, int j, long long gx0, long long gx1, long long gy0, long long gy1,
+                  std::vector<double>& node, Emit&& emit) {
   const double s = std::ldexp(1.0, j);
   const double c = std::cos(j * kGolden) / s, sn = std::sin(j * kGolden) / s;
   const double ox = 0.618 * j, oy = 0.382 * j;
@@ -111,7 +124,41 @@ void add_octave(const RoughField& g, const Blocks& blocks, std::uint64_t seed, i
     v = -sn * gx + c * gy + oy;
   };
   const std::uint64_t key = seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1);
-  const double gx0 = static_cast<double>(g.x0), gy0 = static_cast<double>(g.y0);
+  // Node box covering the corners in (u, v).
+  double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300;
+  for (long long cx : {gx0, gx1 - 1})
+    for (long long cy : {gy0, gy1 - 1}) {
+      double u, v;
+      uv(static_cast<double>(cx), static_cast<double>(cy), u, v);
+      umin = std::min(umin, u); umax = std::max(umax, u);
+      vmin = std::min(vmin, v); vmax = std::max(vmax, v);
+    }
+  const long long i0 = static_cast<long long>(std::floor(umin)) - 1;
+  const long long j0 = static_cast<long long>(std::floor(vmin)) - 1;
+  const int nu = static_cast<int>(std::floor(umax) - i0) + 3, nv = static_cast<int>(std::floor(vmax) - j0) + 3;
+  node.resize(static_cast<std::size_t>(nu) * nv);
+  for (int b = 0; b < nv; ++b)
+    for (int a = 0; a < nu; ++a)
+      node[static_cast<std::size_t>(b) * nu + a] = std::sqrt(3.0) * hash_uniform(key, i0 + a, j0 + b);
+  for (long long gy = gy0; gy < gy1; ++gy)
+    for (long long gx = gx0; gx < gx1; ++gx) {
+      double u, v;
+      uv(static_cast<double>(gx), static_cast<double>(gy), u, v);
+      const long long iu = floor_int(u), iv = floor_int(v);
+      const double tu = u - iu, tv = v - iv;
+      double col[4];
+      for (int r = 0; r < 4; ++r) {
+        const double* p = node.data() + static_cast<std::size_t>(iv - 1 + r - j0) * nu + (iu - 1 - i0);
+        col[r] = catmull_rom(p[0], p[1], p[2], p[3], tu);
+      }
+      emit(gx - gx0, gy - gy0, catmull_rom(col[0], col[1], col[2], col[3], tv));
+    }
+}
+
+// One octave, weighted, added to `out` at the cells of active blocks: from
+// the raster's shared octaves when the field has them, else computed here.
+void add_octave(const RoughField& g, const Blocks& blocks, std::uint64_t seed, int j, double weight,
+                std::vector<double>& out) {
   std::vector<double> node;
   for (int bj = 0; bj < blocks.ny; ++bj)
     for (int bi = 0; bi < blocks.nx; ++bi) {
@@ -119,37 +166,54 @@ void add_octave(const RoughField& g, const Blocks& blocks, std::uint64_t seed, i
       const int x0 = blocks.x0(bi), x1 = blocks.x1(bi, g.w);
       const int y0 = blocks.y0(bj), y1 = blocks.y1(bj, g.h);
       if (x1 <= x0 || y1 <= y0) continue;
-      // Node box covering the block's corners in (u, v).
-      double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300;
-      for (int cx : {x0, x1 - 1})
-        for (int cy : {y0, y1 - 1}) {
-          double u, v;
-          uv(gx0 + cx, gy0 + cy, u, v);
-          umin = std::min(umin, u); umax = std::max(umax, u);
-          vmin = std::min(vmin, v); vmax = std::max(vmax, v);
-        }
-      const long long i0 = static_cast<long long>(std::floor(umin)) - 1;
-      const long long j0 = static_cast<long long>(std::floor(vmin)) - 1;
-      const int nu = static_cast<int>(std::floor(umax) - i0) + 3, nv = static_cast<int>(std::floor(vmax) - j0) + 3;
-      node.resize(static_cast<std::size_t>(nu) * nv);
-      for (int b = 0; b < nv; ++b)
-        for (int a = 0; a < nu; ++a)
-          node[static_cast<std::size_t>(b) * nu + a] = std::sqrt(3.0) * hash_uniform(key, i0 + a, j0 + b);
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-          double u, v;
-          uv(gx0 + x, gy0 + y, u, v);
-          const long long iu = static_cast<long long>(std::floor(u)), iv = static_cast<long long>(std::floor(v));
-          const double tu = u - iu, tv = v - iv;
-          double col[4];
-          for (int r = 0; r < 4; ++r) {
-            const double* p = node.data() + static_cast<std::size_t>(iv - 1 + r - j0) * nu + (iu - 1 - i0);
-            col[r] = catmull_rom(p[0], p[1], p[2], p[3], tu);
-          }
-          out[g.index(x, y)] += weight * catmull_rom(col[0], col[1], col[2], col[3], tv);
-        }
+      double* o = out.data() + g.index(x0, y0);
+      const auto add = [&](long long x, long long y, double v) { o[y * g.w + x] += weight * v; };
+      if (!g.octaves) {
+        octave_cells(seed, j, g.x0 + x0, g.x0 + x1, g.y0 + y0, g.y0 + y1, node, add);
+        continue;
+      }
+      // The block's cached values, from the field's first cell in it.
+      const long long gbx = (g.x0 + x0) / kBlock, gby = (g.y0 + y0) / kBlock;
+      const double* v = g.octaves->block(gbx, gby) + static_cast<std::size_t>(j) * kBlock * kBlock +
+                        (g.y0 + y0 - gby * kBlock) * kBlock + (g.x0 + x0 - gbx * kBlock);
+      for (int y = 0; y < y1 - y0; ++y)
+        for (int x = 0; x < x1 - x0; ++x) add(x, y, v[y * kBlock + x]);
     }
 }
+
+}  // namespace
+
+struct NoiseOctaves::Slot {
+  std::once_flag made;
+  std::unique_ptr<double[]> values;
+};
+
+NoiseOctaves::NoiseOctaves(long long width, long long height, std::uint64_t seed)
+    : width_(width),
+      height_(height),
+      nbx_((width + kBlock - 1) / kBlock),
+      nby_((height + kBlock - 1) / kBlock),
+      seed_(seed),
+      slots_(new Slot[static_cast<std::size_t>(nbx_ * nby_)]) {}
+
+NoiseOctaves::~NoiseOctaves() = default;
+
+const double* NoiseOctaves::block(long long bi, long long bj) const {
+  Slot& slot = slots_[static_cast<std::size_t>(bj * nbx_ + bi)];
+  std::call_once(slot.made, [&] {
+    slot.values = std::make_unique<double[]>(static_cast<std::size_t>(kOctaves) * kBlock * kBlock);
+    const long long x0 = bi * kBlock, x1 = std::min(width_, x0 + kBlock);
+    const long long y0 = bj * kBlock, y1 = std::min(height_, y0 + kBlock);
+    std::vector<double> node;
+    for (int j = 0; j < kOctaves; ++j) {
+      double* out = slot.values.get() + static_cast<std::size_t>(j) * kBlock * kBlock;
+      octave_cells(seed_, j, x0, x1, y0, y1, node, [&](long long x, long long y, double v) { out[y * kBlock + x] = v; });
+    }
+  });
+  return slot.values.get();
+}
+
+namespace {
 
 // Variance of second differences along x and y over the cells of `z` whose
 // 3-cell stencils lie in active blocks (the noise is 0 elsewhere).
@@ -300,6 +364,7 @@ std::vector<double> fractal_noise(const Grid& g, std::uint64_t seed, double H, i
 void add_roughness(Grid& grid, const FillParams& params) { add_roughness(RoughField::of(grid), params); }
 
 void add_roughness(const RoughField& grid, const FillParams& params, int threads) {
+  if (grid.octaves && grid.octaves->seed() != params.seed) throw std::invalid_argument("noise octaves of another seed");
   const int w = grid.w, h = grid.h;
   double H = params.H;
   RoughnessModel global;

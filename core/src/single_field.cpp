@@ -4,6 +4,7 @@
 #include <atomic>
 #include <deque>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -99,7 +100,7 @@ class DeepGuide {
 // fill of a large void depended on how much terrain its field held (the
 // cascade's coarse levels), with it on the void's own surroundings.
 DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, bool may_defer, const FillParams& params,
-                          double max_distance, const ProgressFn& progress, int threads) {
+                          double max_distance, const ProgressFn& progress, int threads, const NoiseOctaves* octaves) {
   std::vector<double> z;
   std::vector<std::uint8_t> valid;
   z.reserve(static_cast<std::size_t>(d.rect.width()) * d.rect.height());
@@ -110,7 +111,7 @@ DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, bool m
     valid.insert(valid.end(), r.valid.begin() + from, r.valid.begin() + to);
   }
   return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), DeepPins{[&dg, may_defer] { return dg.get(may_defer); }, dg.radius()},
-                          params, max_distance, progress, threads);
+                          params, max_distance, progress, threads, octaves);
 }
 
 // Hands out the domains, largest first, so that the last ones to finish are
@@ -163,6 +164,10 @@ std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain
   std::vector<DomainResult> results(domains.size());
   std::vector<std::exception_ptr> errors(domains.size());
   DomainQueue queue(domains, dg);
+  // Rough fills of several fields share the noise where fields overlap.
+  std::unique_ptr<NoiseOctaves> octaves;
+  if ((params.rs_auto || params.rs > 0) && domains.size() > 1)
+    octaves = std::make_unique<NoiseOctaves>(r.w, r.h, params.seed);
   std::atomic<std::size_t> done{0};
   std::atomic<bool> cancel{false};
   const ProgressFn worker_progress = [&cancel](double) { return !cancel.load(std::memory_order_relaxed); };
@@ -174,7 +179,8 @@ std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain
         // and every thread inside its solver.
         const bool lone = domains.size() == 1;
         const ProgressFn& p = main && lone ? progress : worker_progress;
-        results[i] = solve_domain(r, domains[i], dg, may_defer, params, max_distance, p, lone ? threads : 1);
+        results[i] =
+            solve_domain(r, domains[i], dg, may_defer, params, max_distance, p, lone ? threads : 1, octaves.get());
       } catch (const GuideBusy&) {
         queue.defer(i);
         continue;

@@ -69,7 +69,8 @@ void pin_other_voids(const Box& rect, const std::vector<VoidRun>& runs, const De
 
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
                                  const std::uint8_t* valid, const DeepPins& pins, const FillParams& params,
-                                 double max_distance, const ProgressFn& progress, int threads) {
+                                 double max_distance, const ProgressFn& progress, int threads,
+                                 const NoiseOctaves* octaves) {
   const int w = rect.width(), h = rect.height();
   const std::size_t cells = static_cast<std::size_t>(w) * h;
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - rect.y0) * w + (x - rect.x0); };
@@ -125,7 +126,7 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
   thin_plate_smooth(view, schedule, rough ? sub_progress(progress, 0.0, 0.8) : progress);
   // Roughness on the smooth fill, keyed on raster coordinates (roughness.hpp);
   // its statistics come from the field: the void and its margin.
-  if (rough) add_roughness(RoughField{w, h, rect.x0, rect.y0, z.data(), state.data()}, params, threads);
+  if (rough) add_roughness(RoughField{w, h, rect.x0, rect.y0, z.data(), state.data(), octaves}, params, threads);
   for (const VoidRun& run : runs)
     for (int x = run.x0; x < run.x1; ++x) {
       const std::size_t i = at(x, run.y);

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <numbers>
 #include <random>
+#include <stdexcept>
+#include <vector>
 
 #include "mcmd/fill.hpp"
 #include "mcmd/roughness.hpp"
@@ -155,6 +157,41 @@ TEST(Roughness, AutoFollowsTheTerrainAroundEachVoid) {
     EXPECT_GT(ratio, 0.5) << "void at x = " << cx;
     EXPECT_LT(ratio, 2.0) << "void at x = " << cx;
   }
+}
+
+// The raster's shared octaves (single_field.cpp) give each field the noise it
+// computes alone, bit for bit, for fields cut anywhere in the 32-cell blocks.
+TEST(Roughness, SharedOctavesGiveAFieldItsOwnNoiseBits) {
+  Grid raster = fbm(8, 0.6, 2);  // 257², standing in for a raster
+  punch_disc(raster, 90, 100, 20);
+  punch_disc(raster, 150, 120, 9);
+  mcmd::FillParams params;  // a fixed amplitude: every cut gets noise (-rs auto may find too few pairs)
+  params.rs = 0.05;
+  params.seed = 11;
+  const mcmd::NoiseOctaves octaves(raster.side(), raster.side(), params.seed);
+  struct Cut { int x0, y0, w, h; };
+  for (const Cut c : {Cut{45, 61, 101, 83}, Cut{64, 64, 128, 96}, Cut{0, 0, 257, 257}, Cut{130, 99, 40, 41}}) {
+    std::vector<double> z(static_cast<std::size_t>(c.w) * c.h);
+    std::vector<CellState> state(z.size());
+    for (int y = 0; y < c.h; ++y)
+      for (int x = 0; x < c.w; ++x) {
+        z[static_cast<std::size_t>(y) * c.w + x] = raster.z(c.x0 + x, c.y0 + y);
+        state[static_cast<std::size_t>(y) * c.w + x] = raster.state(c.x0 + x, c.y0 + y);
+      }
+    std::vector<double> alone = z, shared = z;
+    mcmd::add_roughness(mcmd::RoughField{c.w, c.h, c.x0, c.y0, alone.data(), state.data()}, params);
+    mcmd::add_roughness(mcmd::RoughField{c.w, c.h, c.x0, c.y0, shared.data(), state.data(), &octaves}, params);
+    EXPECT_NE(alone, z) << "the cut at " << c.x0 << ", " << c.y0 << " got no roughness";
+    EXPECT_EQ(0, std::memcmp(alone.data(), shared.data(), alone.size() * sizeof(double)))
+        << "cut at " << c.x0 << ", " << c.y0;
+  }
+  mcmd::FillParams other = params;
+  other.seed = 12;
+  std::vector<double> z(16, 0.0);
+  std::vector<CellState> state(16, CellState::unknown);
+  state[0] = CellState::known;
+  EXPECT_THROW(mcmd::add_roughness(mcmd::RoughField{4, 4, 0, 0, z.data(), state.data(), &octaves}, other),
+               std::invalid_argument);
 }
 
 }  // namespace
