@@ -166,7 +166,7 @@ std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain
   DomainQueue queue(domains, dg);
   // Rough fills of several fields share the noise where fields overlap.
   std::unique_ptr<NoiseOctaves> octaves;
-  if ((params.rs_auto || params.rs > 0) && domains.size() > 1)
+  if (adds_roughness(params) && domains.size() > 1)
     octaves = std::make_unique<NoiseOctaves>(r.w, r.h, params.seed);
   std::atomic<std::size_t> done{0};
   std::atomic<bool> cancel{false};

@@ -298,7 +298,7 @@ void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule
 void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,
                                const ProgressFn& progress) {
   const FieldView field{grid.side(), grid.side(), grid.elevations().data(), grid.states().data()};
-  const bool rough = params.rs_auto || params.rs > 0;
+  const bool rough = adds_roughness(params);
   thin_plate_smooth(field, schedule, rough ? sub_progress(progress, 0.0, 0.9) : progress);
   // 4. Roughness on the smooth fill.
   if (rough) add_roughness(grid, params);

@@ -122,7 +122,7 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
     view.farthest = 0.0;
     for (std::size_t i = 0; i < cells; ++i) view.farthest = std::max(view.farthest, dist[i]);
   }
-  const bool rough = params.rs_auto || params.rs > 0;
+  const bool rough = adds_roughness(params);
   thin_plate_smooth(view, schedule, rough ? sub_progress(progress, 0.0, 0.8) : progress);
   // Roughness on the smooth fill, keyed on raster coordinates (roughness.hpp);
   // its statistics come from the field: the void and its margin.

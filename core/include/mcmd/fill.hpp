@@ -49,6 +49,10 @@ Scheme scheme_of(Method method);
 // guide's lattice is then filled as a field of any size).
 inline bool is_smooth_default(const FillParams& p) { return p.method == Method::mcmd && !p.rs_auto && p.rs == 0; }
 
+// Whether the default method adds roughness (-rs auto, or -rs > 0) to its
+// smooth fill (roughness.hpp).
+inline bool adds_roughness(const FillParams& p) { return p.rs_auto || p.rs > 0; }
+
 // Fill every unknown cell of `grid` with `params.method`.
 // Pre: at least one cell is a constraint (known, ridge or river); parameters finite.
 // Post: every elevation is finite; constraint cells and all states are unchanged.
