@@ -4,7 +4,6 @@
 #include <atomic>
 #include <deque>
 #include <exception>
-#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -100,7 +99,7 @@ class DeepGuide {
 // fill of a large void depended on how much terrain its field held (the
 // cascade's coarse levels), with it on the void's own surroundings.
 DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, bool may_defer, const FillParams& params,
-                          double max_distance, const ProgressFn& progress, int threads, const NoiseOctaves* octaves) {
+                          double max_distance, const ProgressFn& progress, int threads) {
   std::vector<double> z;
   std::vector<std::uint8_t> valid;
   z.reserve(static_cast<std::size_t>(d.rect.width()) * d.rect.height());
@@ -111,7 +110,7 @@ DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, bool m
     valid.insert(valid.end(), r.valid.begin() + from, r.valid.begin() + to);
   }
   return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), DeepPins{[&dg, may_defer] { return dg.get(may_defer); }, dg.radius()},
-                          params, max_distance, progress, threads, octaves);
+                          params, max_distance, progress, threads);
 }
 
 // Hands out the domains, largest first, so that the last ones to finish are
@@ -164,10 +163,6 @@ std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain
   std::vector<DomainResult> results(domains.size());
   std::vector<std::exception_ptr> errors(domains.size());
   DomainQueue queue(domains, dg);
-  // Rough fills of several fields share the noise where fields overlap.
-  std::unique_ptr<NoiseOctaves> octaves;
-  if (adds_roughness(params) && domains.size() > 1)
-    octaves = std::make_unique<NoiseOctaves>(r.w, r.h, params.seed);
   std::atomic<std::size_t> done{0};
   std::atomic<bool> cancel{false};
   const ProgressFn worker_progress = [&cancel](double) { return !cancel.load(std::memory_order_relaxed); };
@@ -180,7 +175,7 @@ std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain
         const bool lone = domains.size() == 1;
         const ProgressFn& p = main && lone ? progress : worker_progress;
         results[i] =
-            solve_domain(r, domains[i], dg, may_defer, params, max_distance, p, lone ? threads : 1, octaves.get());
+            solve_domain(r, domains[i], dg, may_defer, params, max_distance, p, lone ? threads : 1);
       } catch (const GuideBusy&) {
         queue.defer(i);
         continue;

@@ -295,13 +295,33 @@ void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule
   report(progress, 1.0);
 }
 
+void thin_plate_with_roughness(const FieldView& field, long long x0, long long y0, const FillParams& params,
+                               const ThinPlateSchedule& schedule, const ProgressFn& progress) {
+  std::vector<double> d;
+  if (adds_roughness(params))
+    d = roughness_displacement(RoughField{field.w, field.h, x0, y0, field.z, field.state}, params,
+                               schedule.vcycle.threads);
+  if (d.empty()) return thin_plate_smooth(field, schedule, progress);
+  // S(z − d) + d: the constraints are shifted for the solve, then restored.
+  const std::size_t cells = static_cast<std::size_t>(field.w) * field.h;
+  std::vector<double> kept;
+  for (std::size_t i = 0; i < cells; ++i)
+    if (is_constraint(field.state[i]) && d[i] != 0.0) {
+      kept.push_back(field.z[i]);
+      field.z[i] -= d[i];
+    }
+  thin_plate_smooth(field, schedule, progress);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < cells; ++i) {
+    if (!is_constraint(field.state[i])) field.z[i] += d[i];
+    else if (d[i] != 0.0) field.z[i] = kept[k++];
+  }
+}
+
 void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,
                                const ProgressFn& progress) {
   const FieldView field{grid.side(), grid.side(), grid.elevations().data(), grid.states().data()};
-  const bool rough = adds_roughness(params);
-  thin_plate_smooth(field, schedule, rough ? sub_progress(progress, 0.0, 0.9) : progress);
-  // 4. Roughness on the smooth fill.
-  if (rough) add_roughness(grid, params);
+  thin_plate_with_roughness(field, grid.origin_x(), grid.origin_y(), params, schedule, progress);
   report(progress, 1.0);
 }
 

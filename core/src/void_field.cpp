@@ -5,7 +5,6 @@
 #include <cstddef>
 
 #include "mcmd/distance.hpp"
-#include "mcmd/roughness.hpp"
 #include "mcmd/thin_plate_schedule.hpp"
 
 namespace mcmd::detail {
@@ -69,8 +68,7 @@ void pin_other_voids(const Box& rect, const std::vector<VoidRun>& runs, const De
 
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
                                  const std::uint8_t* valid, const DeepPins& pins, const FillParams& params,
-                                 double max_distance, const ProgressFn& progress, int threads,
-                                 const NoiseOctaves* octaves) {
+                                 double max_distance, const ProgressFn& progress, int threads) {
   const int w = rect.width(), h = rect.height();
   const std::size_t cells = static_cast<std::size_t>(w) * h;
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - rect.y0) * w + (x - rect.x0); };
@@ -122,11 +120,9 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
     view.farthest = 0.0;
     for (std::size_t i = 0; i < cells; ++i) view.farthest = std::max(view.farthest, dist[i]);
   }
-  const bool rough = adds_roughness(params);
-  thin_plate_smooth(view, schedule, rough ? sub_progress(progress, 0.0, 0.8) : progress);
-  // Roughness on the smooth fill, keyed on raster coordinates (roughness.hpp);
-  // its statistics come from the field: the void and its margin.
-  if (rough) add_roughness(RoughField{w, h, rect.x0, rect.y0, z.data(), state.data(), octaves}, params, threads);
+  // Roughness, if any, is keyed on raster coordinates (roughness.hpp); its
+  // statistics come from the field: the void and its margin.
+  thin_plate_with_roughness(view, rect.x0, rect.y0, params, schedule, progress);
   for (const VoidRun& run : runs)
     for (int x = run.x0; x < run.x1; ++x) {
       const std::size_t i = at(x, run.y);

@@ -13,7 +13,6 @@
 #include "mcmd/coarse_guide.hpp"
 #include "mcmd/fill.hpp"
 #include "mcmd/progress.hpp"
-#include "mcmd/roughness.hpp"
 #include "void_components.hpp"
 
 namespace mcmd::detail {
@@ -54,11 +53,9 @@ struct VoidFieldResult {
 // z is taken over as the solver's work array.
 // Post: when the component reaches far (reaches_far: the coarse guide's
 // tension is needed) values is empty: the caller must fill it another way.
-// `threads` run the solver of a large field (same result for any count);
-// `octaves`, when given, are the raster's shared noise octaves for a rough fill.
+// `threads` run the solver of a large field (same result for any count).
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
                                  const std::uint8_t* valid, const DeepPins& pins, const FillParams& params,
-                                 double max_distance, const ProgressFn& progress = {}, int threads = 1,
-                                 const NoiseOctaves* octaves = nullptr);
+                                 double max_distance, const ProgressFn& progress = {}, int threads = 1);
 
 }  // namespace mcmd::detail

@@ -66,6 +66,13 @@ struct FieldView {
 // unchanged; unknown cells filled when the field has a constraint.
 void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule, const ProgressFn& progress = {});
 
+// thin_plate_smooth plus the roughness of `params` (roughness.hpp) in the
+// same solve; the noise is keyed on raster coordinates, the field's cell
+// (0, 0) being raster cell (x0, y0). Pre/post as thin_plate_smooth; with no
+// roughness, it is that.
+void thin_plate_with_roughness(const FieldView& field, long long x0, long long y0, const FillParams& params,
+                               const ThinPlateSchedule& schedule, const ProgressFn& progress = {});
+
 // thin_plate_fill with an explicit schedule; noise (rs, rs_auto) included.
 void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,
                                const ProgressFn& progress = {});
