@@ -29,25 +29,36 @@ double smoothstep(double t) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-// Semivariogram at lag d over pairs of constraint cells along x and y.
-double semivariogram(const RoughField& g, int d, std::size_t& pairs) {
-  double sum = 0.0;
-  pairs = 0;
+// Semivariogram at lags 1, 2, 4, 8, 16 over pairs of constraint cells along x
+// and y, in one pass over the field (each lag summed in row-major order).
+constexpr int kVariogramLags = 5;
+struct Variogram {
+  double gamma[kVariogramLags] = {};
+  std::size_t pairs[kVariogramLags] = {};
+};
+Variogram semivariogram(const RoughField& g) {
+  double sum[kVariogramLags] = {};
+  Variogram v;
   for (int y = 0; y < g.h; ++y)
     for (int x = 0; x < g.w; ++x) {
       if (!is_constraint(g.state_at(x, y))) continue;
-      if (x + d < g.w && is_constraint(g.state_at(x + d, y))) {
-        const double dz = g.z_at(x + d, y) - g.z_at(x, y);
-        sum += dz * dz;
-        ++pairs;
-      }
-      if (y + d < g.h && is_constraint(g.state_at(x, y + d))) {
-        const double dz = g.z_at(x, y + d) - g.z_at(x, y);
-        sum += dz * dz;
-        ++pairs;
+      const double z = g.z_at(x, y);
+      for (int k = 0, d = 1; k < kVariogramLags; ++k, d *= 2) {
+        if (x + d < g.w && is_constraint(g.state_at(x + d, y))) {
+          const double dz = g.z_at(x + d, y) - z;
+          sum[k] += dz * dz;
+          ++v.pairs[k];
+        }
+        if (y + d < g.h && is_constraint(g.state_at(x, y + d))) {
+          const double dz = g.z_at(x, y + d) - z;
+          sum[k] += dz * dz;
+          ++v.pairs[k];
+        }
       }
     }
-  return pairs ? 0.5 * sum / static_cast<double>(pairs) : 0.0;
+  for (int k = 0; k < kVariogramLags; ++k)
+    v.gamma[k] = v.pairs[k] ? 0.5 * sum[k] / static_cast<double>(v.pairs[k]) : 0.0;
+  return v;
 }
 
 // Blocks of kBlock² cells aligned to global raster coordinates, so every
@@ -326,9 +337,10 @@ RoughnessModel estimate_roughness(const RoughField& grid) {
   RoughnessModel m;
   double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0, g1 = 0, g2 = 0;
   std::size_t pairs1 = 0;
-  for (int d = 1; d <= 16; d *= 2) {
-    std::size_t pairs = 0;
-    const double gamma = semivariogram(grid, d, pairs);
+  const Variogram vg = semivariogram(grid);
+  for (int k = 0, d = 1; k < kVariogramLags; ++k, d *= 2) {
+    const std::size_t pairs = vg.pairs[k];
+    const double gamma = vg.gamma[k];
     if (pairs < 30 || gamma <= 0) continue;
     if (d == 1) { g1 = gamma; pairs1 = pairs; }
     if (d == 2) g2 = gamma;
