@@ -80,14 +80,16 @@ std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h) {
   return sq;
 }
 
-bool all_within_chebyshev(const std::uint8_t* valid, int w, int h, int r) {
+std::vector<std::uint8_t> within_chebyshev(const std::uint8_t* valid, int w, int h, int r) {
   const std::size_t W = static_cast<std::size_t>(w);
   const int cap = r + 1;  // "farther than r" is all that counts
   const std::vector<int> g = column_distance(valid, w, h, cap);  // vertical, capped
   // Along each row: the nearest column whose vertical distance is <= r.
+  std::vector<std::uint8_t> out(W * static_cast<std::size_t>(h));
   std::vector<int> left(W);
   for (int y = 0; y < h; ++y) {
     const int* row = g.data() + y * W;
+    std::uint8_t* o = out.data() + y * W;
     int last = -cap - 1;
     for (int x = 0; x < w; ++x) {
       if (row[x] <= r) last = x;
@@ -96,10 +98,15 @@ bool all_within_chebyshev(const std::uint8_t* valid, int w, int h, int r) {
     int next = w + cap;
     for (int x = w - 1; x >= 0; --x) {
       if (row[x] <= r) next = x;
-      if (std::min(left[x], next - x) > r) return false;
+      o[x] = std::min(left[x], next - x) <= r;
     }
   }
-  return true;
+  return out;
+}
+
+bool all_within_chebyshev(const std::uint8_t* valid, int w, int h, int r) {
+  const std::vector<std::uint8_t> near = within_chebyshev(valid, w, h, r);
+  return std::all_of(near.begin(), near.end(), [](std::uint8_t v) { return v != 0; });
 }
 
 }  // namespace mcmd

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "mcmd/distance.hpp"
 #include "mcmd/noise.hpp"
 
 namespace mcmd {
@@ -92,34 +93,9 @@ int positive_mod(long long v, int m) { return static_cast<int>(((v % m) + m) % m
 // whole 32² blocks around the voids: docs/default-method.md).
 constexpr int kNoiseReach = 8;
 std::vector<std::uint8_t> noise_cells(const RoughField& g) {
-  const int w = g.w, h = g.h, R = kNoiseReach;
-  // Rows dilated: each run of unknown cells grown by R on both sides.
-  std::vector<std::uint8_t> row(g.cells(), 0);
-  for (int y = 0; y < h; ++y) {
-    std::uint8_t* r = row.data() + g.index(0, y);
-    for (int x = 0; x < w;) {
-      if (is_constraint(g.state_at(x, y))) { ++x; continue; }
-      const int x0 = x;
-      while (x < w && !is_constraint(g.state_at(x, y))) ++x;
-      std::fill(r + std::max(0, x0 - R), r + std::min(w, x + R), std::uint8_t{1});
-    }
-  }
-  // Then columns: a cell is in when a dilated row cell lies within R rows
-  // (the nearest one above, and below, tracked per column).
-  std::vector<std::uint8_t> out(g.cells(), 0);
-  std::vector<int> last(static_cast<std::size_t>(w), -(R + 1));
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      if (row[g.index(x, y)]) last[x] = y;
-      out[g.index(x, y)] = y - last[x] <= R;
-    }
-  std::fill(last.begin(), last.end(), h + R + 1);
-  for (int y = h - 1; y >= 0; --y)
-    for (int x = 0; x < w; ++x) {
-      if (row[g.index(x, y)]) last[x] = y;
-      out[g.index(x, y)] |= last[x] - y <= R;
-    }
-  return out;
+  std::vector<std::uint8_t> unknown(g.cells());
+  for (std::size_t i = 0; i < unknown.size(); ++i) unknown[i] = !is_constraint(g.state[i]);
+  return within_chebyshev(unknown.data(), g.w, g.h, kNoiseReach);
 }
 
 // The block lattice of a field; blocks holding a cell of `mask` are active.

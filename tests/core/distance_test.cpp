@@ -38,8 +38,9 @@ TEST(Distance, MatchesBruteForceExactly) {
     }
 }
 
-// The Chebyshev bound agrees with brute force: true exactly when every cell
-// has a valid cell within r along both axes.
+// The Chebyshev dilation and bound agree with brute force: a cell is within r
+// when a valid cell lies within r along both axes; the bound is true exactly
+// when every cell is.
 TEST(Distance, ChebyshevBoundMatchesBruteForce) {
   std::mt19937 rng(11);
   const int sizes[][2] = {{1, 1}, {1, 30}, {30, 1}, {19, 13}, {40, 33}};
@@ -50,9 +51,11 @@ TEST(Distance, ChebyshevBoundMatchesBruteForce) {
         std::vector<std::uint8_t> valid(static_cast<std::size_t>(w) * h);
         std::bernoulli_distribution pick(density);
         for (auto& v : valid) v = pick(rng) ? 1 : 0;
+        const std::vector<std::uint8_t> within = mcmd::within_chebyshev(valid.data(), w, h, r);
+        ASSERT_EQ(within.size(), valid.size());
         bool all = true;
-        for (int y = 0; y < h && all; ++y)
-          for (int x = 0; x < w && all; ++x) {
+        for (int y = 0; y < h; ++y)
+          for (int x = 0; x < w; ++x) {
             bool near = false;
             for (int v = std::max(0, y - r); v <= std::min(h - 1, y + r) && !near; ++v)
               for (int u = std::max(0, x - r); u <= std::min(w - 1, x + r); ++u)
@@ -60,7 +63,9 @@ TEST(Distance, ChebyshevBoundMatchesBruteForce) {
                   near = true;
                   break;
                 }
-            all = near;
+            all = all && near;
+            ASSERT_EQ(within[static_cast<std::size_t>(y) * w + x] != 0, near)
+                << w << "x" << h << " density " << density << " r " << r << " cell " << x << "," << y;
           }
         EXPECT_EQ(mcmd::all_within_chebyshev(valid.data(), w, h, r), all)
             << w << "x" << h << " density " << density << " r " << r;

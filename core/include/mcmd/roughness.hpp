@@ -44,8 +44,8 @@ RoughnessModel estimate_roughness(const RoughField& field);
 // few constraint pairs to estimate). The fill is then one thin-plate solve,
 // F = S(z − d) + d (thin_plate_with_roughness): S being linear, that is
 // S(z) + (d − S(d)), the smooth fill plus the noise conditioned on the
-// constraints (0 there, growing smoothly into the voids). The noise lies in
-// 32² blocks (aligned to raster coordinates) near voids. rs_auto: H from
+// constraints (0 there, growing smoothly into the voids). The noise lies at
+// the void cells and the constraints within 8 cells of one. rs_auto: H from
 // estimate_roughness; the amplitude per block gives the noise the 5-point
 // Laplacian variance of the terrain around it over the block's voids (and its
 // neighbours') (directional semivariogram of the nearest constraint pairs,
