@@ -80,26 +80,42 @@ std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h) {
   return sq;
 }
 
+namespace {
+
+// In place over n items of `step` bytes each (the first and last `pad` items
+// zero): item i becomes the OR of items i .. i + width - 1. The window doubles
+// per pass, then one pass tops it up to `width`: byte ORs over contiguous
+// memory, which vectorise.
+void or_windows(std::uint8_t* items, std::size_t n, std::size_t step, std::size_t width) {
+  const auto pass = [&](std::size_t k) {
+    const std::size_t end = (n - std::min(n, k)) * step, ahead = k * step;
+    // Each byte reads one k items ahead, not yet updated: safe in vectors.
+#pragma omp simd
+    for (std::size_t t = 0; t < end; ++t) items[t] |= items[t + ahead];
+  };
+  std::size_t k = 1;
+  for (; 2 * k <= width; k *= 2) pass(k);
+  if (width > k) pass(width - k);
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> within_chebyshev(const std::uint8_t* valid, int w, int h, int r) {
-  const std::size_t W = static_cast<std::size_t>(w);
-  const int cap = r + 1;  // "farther than r" is all that counts
-  const std::vector<int> g = column_distance(valid, w, h, cap);  // vertical, capped
-  // Along each row: the nearest column whose vertical distance is <= r.
-  std::vector<std::uint8_t> out(W * static_cast<std::size_t>(h));
-  std::vector<int> left(W);
-  for (int y = 0; y < h; ++y) {
-    const int* row = g.data() + y * W;
-    std::uint8_t* o = out.data() + y * W;
-    int last = -cap - 1;
-    for (int x = 0; x < w; ++x) {
-      if (row[x] <= r) last = x;
-      left[x] = x - last;
-    }
-    int next = w + cap;
-    for (int x = w - 1; x >= 0; --x) {
-      if (row[x] <= r) next = x;
-      o[x] = std::min(left[x], next - x) <= r;
-    }
+  // A (2r+1)² square is a column of 2r+1 then a row of 2r+1: each a sliding OR
+  // over a copy padded with r zeros on both sides.
+  const std::size_t W = static_cast<std::size_t>(w), H = static_cast<std::size_t>(h), R = static_cast<std::size_t>(r);
+  const std::size_t width = 2 * R + 1;
+  std::vector<std::uint8_t> rows((H + 2 * R) * W, 0);  // rows -r .. h+r-1
+  for (std::size_t i = 0; i < W * H; ++i) rows[R * W + i] = valid[i] != 0;
+  or_windows(rows.data(), H + 2 * R, W, width);  // padded row y: rows y-r .. y+r
+  std::vector<std::uint8_t> out(W * H);
+  std::vector<std::uint8_t> line(W + 2 * R, 0);
+  for (std::size_t y = 0; y < H; ++y) {
+    std::copy_n(rows.data() + y * W, W, line.data() + R);
+    std::fill(line.begin() + static_cast<std::ptrdiff_t>(R + W), line.end(), std::uint8_t{0});
+    std::fill_n(line.begin(), R, std::uint8_t{0});
+    or_windows(line.data(), W + 2 * R, 1, width);
+    std::copy_n(line.data(), W, out.data() + y * W);
   }
   return out;
 }

@@ -46,7 +46,7 @@ TEST(Distance, ChebyshevBoundMatchesBruteForce) {
   const int sizes[][2] = {{1, 1}, {1, 30}, {30, 1}, {19, 13}, {40, 33}};
   for (const auto& s : sizes)
     for (double density : {0.0, 0.02, 0.1, 0.5})
-      for (int r : {0, 1, 2, 4, 7}) {
+      for (int r : {0, 1, 2, 3, 4, 7, 8}) {
         const int w = s[0], h = s[1];
         std::vector<std::uint8_t> valid(static_cast<std::size_t>(w) * h);
         std::bernoulli_distribution pick(density);

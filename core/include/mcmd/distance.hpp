@@ -15,7 +15,7 @@ std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h);
 
 // Per cell of the w×h raster, 1 when a valid cell lies within r along both
 // axes at once (Chebyshev distance <= r: `valid` dilated by a (2r+1)² square),
-// in a few integer scans. Pre: r >= 0, valid holds w·h flags.
+// by sliding ORs along columns then rows. Pre: r >= 0, valid holds w·h flags.
 std::vector<std::uint8_t> within_chebyshev(const std::uint8_t* valid, int w, int h, int r);
 
 // Whether every cell of the w×h raster has a valid cell within r along both
