@@ -163,15 +163,17 @@ void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, double tension
 std::vector<double> CoarseGuide::filled(const std::vector<double>& start, double tension, const FillParams& params,
                                         const ProgressFn& progress) const {
   std::vector<double> out = start;
-  if (is_smooth_default(params) && tension == 0) {
+  if (params.method == Method::mcmd && tension == 0) {
     // The lattice as it is, no 2^m+1 padding (a 676×301 lattice padded to
-    // 1025² was 5× the work). Not under tension: across a void reaching the
+    // 1025² was 5× the work; a 301² one to 513², with -rs auto, half the
+    // guide's time). Not under tension: across a void reaching the
     // raster's edge, the mirror (a level surface there) is what stops a
     // coast's slope, which a free edge under tension did not (2.2 km too
     // high in HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains).
     std::vector<CellState> state(out.size());
     for (std::size_t i = 0; i < state.size(); ++i) state[i] = known_[i] ? CellState::known : CellState::unknown;
-    thin_plate_smooth(FieldView{cw_, ch_, out.data(), state.data()}, ThinPlateSchedule{}, progress);
+    thin_plate_with_roughness(FieldView{cw_, ch_, out.data(), state.data()}, 0, 0, params, ThinPlateSchedule{},
+                              progress);
     return out;
   }
   Grid g = mirror_padded_grid(start.data(), known_.data(), cw_, ch_, levels_to_cover(cw_, ch_));

@@ -8,9 +8,9 @@
 // cell gives its value): unlike a plain mean it is not biased towards the
 // known side of a block that a void cuts. The lattice has
 // ceil((W - 1) / S) + 1 points per row (at most max_side), the last one on or
-// past the raster's last cell; it is filled once as it is (the smooth default
-// method: a w×h field) or mirror-padded to a 2^m+1 grid for mcmd::fill (other
-// methods, rough fills); windows then read it through an
+// past the raster's last cell; it is filled once as it is (the default
+// method: a w×h field) or mirror-padded to a 2^m+1 grid for mcmd::fill (the
+// paper methods, tension); windows then read it through an
 // interpolating bicubic (Catmull-Rom) at full resolution.
 #pragma once
 

@@ -45,10 +45,6 @@ const StateShape& shape_for(const FillParams& params, CellState s);
 // The scheme a paper method uses. Pre: method is paper_ds or paper_te.
 Scheme scheme_of(Method method);
 
-// The default method without roughness: the smooth thin plate (the coarse
-// guide's lattice is then filled as a field of any size).
-inline bool is_smooth_default(const FillParams& p) { return p.method == Method::mcmd && !p.rs_auto && p.rs == 0; }
-
 // Whether the default method adds roughness (-rs auto, or -rs > 0) to its
 // smooth fill (roughness.hpp).
 inline bool adds_roughness(const FillParams& p) { return p.rs_auto || p.rs > 0; }
