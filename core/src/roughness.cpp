@@ -30,38 +30,6 @@ double smoothstep(double t) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-// Semivariogram at lags 1, 2, 4, 8, 16 over pairs of constraint cells along x
-// and y, in one pass over the field (each lag summed in row-major order).
-constexpr int kVariogramLags = 5;
-struct Variogram {
-  double gamma[kVariogramLags] = {};
-  std::size_t pairs[kVariogramLags] = {};
-};
-Variogram semivariogram(const RoughField& g) {
-  double sum[kVariogramLags] = {};
-  Variogram v;
-  for (int y = 0; y < g.h; ++y)
-    for (int x = 0; x < g.w; ++x) {
-      if (!is_constraint(g.state_at(x, y))) continue;
-      const double z = g.z_at(x, y);
-      for (int k = 0, d = 1; k < kVariogramLags; ++k, d *= 2) {
-        if (x + d < g.w && is_constraint(g.state_at(x + d, y))) {
-          const double dz = g.z_at(x + d, y) - z;
-          sum[k] += dz * dz;
-          ++v.pairs[k];
-        }
-        if (y + d < g.h && is_constraint(g.state_at(x, y + d))) {
-          const double dz = g.z_at(x, y + d) - z;
-          sum[k] += dz * dz;
-          ++v.pairs[k];
-        }
-      }
-    }
-  for (int k = 0; k < kVariogramLags; ++k)
-    v.gamma[k] = v.pairs[k] ? 0.5 * sum[k] / static_cast<double>(v.pairs[k]) : 0.0;
-  return v;
-}
-
 // Blocks of kBlock² cells aligned to global raster coordinates, so every
 // window of a tiled fill cuts the same blocks: the unit of local statistics
 // and of where noise is generated at all.
@@ -71,8 +39,6 @@ struct Blocks {
   int nx = 0, ny = 0;    // blocks per row, per column
   int ox = 0, oy = 0;    // local x + ox = position in the block lattice (cells); likewise y
   std::vector<std::uint8_t> active;  // noise is generated in these
-  int bx(int x) const { return (x + ox) / kBlock; }
-  int by(int y) const { return (y + oy) / kBlock; }
   std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * nx + i; }
   bool inside(int i, int j) const { return i >= 0 && j >= 0 && i < nx && j < ny; }
   // Local cells [x0, x1) of block column i (rows likewise), clipped to the field.
@@ -92,24 +58,39 @@ int positive_mod(long long v, int m) { return static_cast<int>(((v % m) + m) % m
 // large voids (blob RMSE median 0.941 at 8, 0.955 at 2, 0.938 at 16 and with
 // whole 32² blocks around the voids: docs/default-method.md).
 constexpr int kNoiseReach = 8;
-std::vector<std::uint8_t> noise_cells(const RoughField& g) {
-  std::vector<std::uint8_t> unknown(g.cells());
-  for (std::size_t i = 0; i < unknown.size(); ++i) unknown[i] = !is_constraint(g.state[i]);
-  return within_chebyshev(unknown.data(), g.w, g.h, kNoiseReach);
+std::vector<std::uint8_t> noise_cells(const std::vector<std::uint8_t>& constraint, int w, int h) {
+  std::vector<std::uint8_t> unknown(constraint.size());
+  for (std::size_t i = 0; i < unknown.size(); ++i) unknown[i] = !constraint[i];
+  return within_chebyshev(unknown.data(), w, h, kNoiseReach);
 }
 
-// The block lattice of a field; blocks holding a cell of `mask` are active.
-Blocks noise_blocks(const RoughField& g, const std::vector<std::uint8_t>& mask) {
+std::vector<std::uint8_t> constraint_mask(const RoughField& g) {
+  std::vector<std::uint8_t> c(g.cells());
+  for (std::size_t i = 0; i < c.size(); ++i) c[i] = is_constraint(g.state[i]);
+  return c;
+}
+
+// The block lattice of a field, no block active.
+Blocks block_lattice(const RoughField& g) {
   Blocks b;
   b.ox = positive_mod(g.x0, kBlock);
   b.oy = positive_mod(g.y0, kBlock);
   b.nx = (g.w + kBlock - 1) / kBlock + 1;
   b.ny = (g.h + kBlock - 1) / kBlock + 1;
   b.active.assign(static_cast<std::size_t>(b.nx) * b.ny, 0);
-  for (int y = 0; y < g.h; ++y)
-    for (int x = 0; x < g.w; ++x)
-      if (mask[g.index(x, y)]) b.active[b.index(b.bx(x), b.by(y))] = 1;
   return b;
+}
+
+// Blocks holding a cell of `mask` become active.
+void mark_active(const RoughField& g, const std::vector<std::uint8_t>& mask, Blocks& b) {
+  for (int bj = 0; bj < b.ny; ++bj)
+    for (int bi = 0; bi < b.nx; ++bi) {
+      const int x0 = b.x0(bi), x1 = b.x1(bi, g.w);
+      unsigned any = 0;
+      for (int y = b.y0(bj); y < b.y1(bj, g.h) && !any; ++y)
+        for (int x = x0; x < x1; ++x) any |= mask[g.index(x, y)];
+      b.active[b.index(bi, bj)] = any != 0;
+    }
 }
 
 // std::floor for the node coordinates (|v| far below 2^52), without the call
@@ -206,32 +187,19 @@ void add_noise(const RoughField& g, const Blocks& blocks, const std::vector<std:
   }
 }
 
-// Variance of second differences along x and y of `z` at the unknown cells
-// of `g` (their neighbours are noise cells).
-double curvature_of(const std::vector<double>& z, const RoughField& g) {
-  const int w = g.w;
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (int y = 1; y < g.h - 1; ++y)
-    for (int x = 1; x < w - 1; ++x) {
-      if (is_constraint(g.state_at(x, y))) continue;
-      const std::size_t i = g.index(x, y);
-      const double dxx = z[i - 1] - 2 * z[i] + z[i + 1], dyy = z[i - w] - 2 * z[i] + z[i + w];
-      sum += dxx * dxx + dyy * dyy;
-      n += 2;
-    }
-  return n ? sum / static_cast<double>(n) : 0.0;
-}
+// ---- pair statistics ------------------------------------------------------
 
-// ---- local statistics -------------------------------------------------------
-
-// Directional semivariogram sums over pairs of constraint cells (first cell in
-// the block) at lags (1,0) (0,1) (2,0) (0,2) (1,1) (1,-1): together the
-// variance of the 5-point Laplacian of a field with stationary increments,
-// 16(γx1+γy1) - 2(γx2+γy2) - 4(γ(1,1)+γ(1,-1)).
-constexpr int kLags = 6;
-constexpr int kLagDx[kLags] = {1, 0, 2, 0, 1, 1};
-constexpr int kLagDy[kLags] = {0, 1, 0, 2, 1, -1};
+// Lags (dx, dy) of the pairs of constraint cells summed per block (the
+// pair's first cell in the block). The first kLaplacianLags give the variance
+// of the 5-point Laplacian of a field with stationary increments,
+// 16(γx1+γy1) - 2(γx2+γy2) - 4(γ(1,1)+γ(1,-1)); the x and y pairs at 1, 2, 4,
+// 8, 16 give the semivariogram from which H is fitted.
+constexpr int kLags = 12;
+constexpr int kLaplacianLags = 6;
+constexpr int kLagDx[kLags] = {1, 0, 2, 0, 1, 1, 4, 0, 8, 0, 16, 0};
+constexpr int kLagDy[kLags] = {0, 1, 0, 2, 1, -1, 0, 4, 0, 8, 0, 16};
+constexpr int kVariogramLags = 5;  // distances 1, 2, 4, 8, 16: lags kVariogramPair[k]
+constexpr int kVariogramPair[kVariogramLags][2] = {{0, 1}, {2, 3}, {6, 7}, {8, 9}, {10, 11}};
 // Pairs per lag before a neighbourhood's estimate is trusted: the Laplacian
 // variance is a small difference of large γ terms (about 10× cancellation).
 constexpr double kMinPairs = 2000;
@@ -249,31 +217,98 @@ struct LagSums {
     }
   }
   double gamma(int l) const { return count[l] > 0 ? 0.5 * sum[l] / count[l] : 0.0; }
-  double min_count() const { return *std::min_element(count, count + kLags); }
+  double min_laplacian_count() const { return *std::min_element(count, count + kLaplacianLags); }
   double laplacian_variance() const {
     return 16.0 * (gamma(0) + gamma(1)) - 2.0 * (gamma(2) + gamma(3)) - 4.0 * (gamma(4) + gamma(5));
   }
 };
 
+// One lag's pairs along a row segment of n cells: z is 0 and m 0 at the
+// non-constraint cells, m 1 at the constraints. Arithmetic only, so that it
+// vectorises (a select on a comparison does not, under IEEE traps).
+struct PairRun {
+  double sum = 0.0, count = 0.0;
+};
+PairRun pair_run(const double* __restrict z0, const double* __restrict m0, const double* __restrict z1,
+                 const double* __restrict m1, int n) {
+  double sum = 0.0, count = 0.0;
+#pragma omp simd reduction(+ : sum, count)
+  for (int x = 0; x < n; ++x) {
+    const double d = z1[x] - z0[x], m = m0[x] * m1[x];
+    sum += m * (d * d);
+    count += m;
+  }
+  return {sum, count};
+}
+
+// The pair sums of the blocks of block row bj into `out`, on a copy of its
+// rows and the 16 below as pair_run's z and m (buffers reused by the caller).
+void block_row_pairs(const RoughField& g, const std::vector<std::uint8_t>& con, const Blocks& b, int bj,
+                     std::vector<double>& z, std::vector<double>& m, std::vector<LagSums>& out) {
+  constexpr int kReach = 16;  // the longest lag
+  const int y0 = b.y0(bj), y1 = b.y1(bj, g.h);
+  if (y1 <= y0) return;
+  // Rows ry0 .. ry1 - 1 (from one above, for the (1, -1) lag).
+  const int ry0 = std::max(0, y0 - 1), ry1 = std::min(g.h, y1 + kReach);
+  const std::size_t first = g.index(0, ry0), cells = static_cast<std::size_t>(ry1 - ry0) * g.w;
+  z.resize(cells);
+  m.resize(cells);
+  for (std::size_t i = 0; i < cells; ++i) {
+    m[i] = con[first + i] ? 1.0 : 0.0;
+    z[i] = con[first + i] ? g.z[first + i] : 0.0;
+  }
+  const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - ry0) * g.w + x; };
+  for (int y = y0; y < y1; ++y)
+    for (int l = 0; l < kLags; ++l) {
+      const int dx = kLagDx[l], py = y + kLagDy[l];
+      if (py < 0 || py >= g.h || dx >= g.w) continue;
+      for (int bi = 0; bi < b.nx; ++bi) {
+        const int x0 = b.x0(bi), x1 = std::min(b.x1(bi, g.w), g.w - dx);
+        if (x1 <= x0) continue;
+        const PairRun r = pair_run(&z[at(x0, y)], &m[at(x0, y)], &z[at(x0 + dx, py)], &m[at(x0 + dx, py)], x1 - x0);
+        LagSums& s = out[b.index(bi, bj)];
+        s.sum[l] += r.sum;
+        s.count[l] += r.count;
+      }
+    }
+}
+
+// Per block, the pair sums of every lag; block rows on `threads` threads, each
+// block summed by one thread in a fixed order (the same bits for any count).
+std::vector<LagSums> pair_sums(const RoughField& g, const std::vector<std::uint8_t>& con, const Blocks& b,
+                               int threads) {
+  std::vector<LagSums> out(static_cast<std::size_t>(b.nx) * b.ny);
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    std::vector<double> z, m;
+#pragma omp for schedule(dynamic)
+    for (int bj = 0; bj < b.ny; ++bj) block_row_pairs(g, con, b, bj, z, m, out);
+  }
+  return out;
+}
+
+// The semivariogram γ(d) over the whole field, d = 1, 2, 4, 8, 16.
+struct Variogram {
+  double gamma[kVariogramLags] = {};
+  double pairs[kVariogramLags] = {};
+};
+Variogram variogram_of(const std::vector<LagSums>& blocks) {
+  LagSums total;
+  for (const LagSums& s : blocks) total.add(s);
+  Variogram v;
+  for (int k = 0; k < kVariogramLags; ++k) {
+    const int a = kVariogramPair[k][0], b = kVariogramPair[k][1];
+    v.pairs[k] = total.count[a] + total.count[b];
+    v.gamma[k] = v.pairs[k] > 0 ? 0.5 * (total.sum[a] + total.sum[b]) / v.pairs[k] : 0.0;
+  }
+  return v;
+}
+
 // Summed-area table of the per-block lag sums: any square neighbourhood in O(1).
 class LagTable {
  public:
-  LagTable(const RoughField& g, const Blocks& b)
+  LagTable(const std::vector<LagSums>& block, const Blocks& b)
       : nx_(b.nx), ny_(b.ny), sat_(static_cast<std::size_t>(b.nx + 1) * (b.ny + 1)) {
-    std::vector<LagSums> block(static_cast<std::size_t>(b.nx) * b.ny);
-    for (int y = 0; y < g.h; ++y)
-      for (int x = 0; x < g.w; ++x) {
-        if (!is_constraint(g.state_at(x, y))) continue;
-        LagSums& ls = block[b.index(b.bx(x), b.by(y))];
-        const double z = g.z_at(x, y);
-        for (int l = 0; l < kLags; ++l) {
-          const int nx = x + kLagDx[l], ny = y + kLagDy[l];
-          if (!g.contains(nx, ny) || !is_constraint(g.state_at(nx, ny))) continue;
-          const double d = g.z_at(nx, ny) - z;
-          ls.sum[l] += d * d;
-          ls.count[l] += 1;
-        }
-      }
     for (int j = 0; j < ny_; ++j)
       for (int i = 0; i < nx_; ++i) {
         LagSums& s = sat_[at(i + 1, j + 1)];
@@ -300,22 +335,53 @@ class LagTable {
   std::vector<LagSums> sat_;
 };
 
-// Laplacian moments of the noise over the unknown cells of one block.
-struct LapMoments {
-  double n = 0, q = 0, qq = 0;
-  void add(const LapMoments& o) { n += o.n; q += o.q; qq += o.qq; }
-  double var() const { return n > 1 ? std::max(0.0, qq / n - (q / n) * (q / n)) : 0.0; }
+// The noise's second differences over the unknown cells of one block: the
+// moments of its 5-point Laplacian, and Σ(dxx² + dyy²).
+struct NoiseMoments {
+  double n = 0, q = 0, qq = 0, curvature = 0;
+  void add(const NoiseMoments& o) { n += o.n; q += o.q; qq += o.qq; curvature += o.curvature; }
+  double laplacian_var() const { return n > 1 ? std::max(0.0, qq / n - (q / n) * (q / n)) : 0.0; }
 };
 
-}  // namespace
+// Per active block (unknown cells lie in active blocks only), block rows on
+// `threads` threads; each row segment a pass that vectorises.
+std::vector<NoiseMoments> noise_moments(const RoughField& g, const std::vector<std::uint8_t>& con, const Blocks& b,
+                                        const std::vector<double>& noise, int threads) {
+  std::vector<NoiseMoments> out(static_cast<std::size_t>(b.nx) * b.ny);
+  const int w = g.w;
+#pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
+  for (int bj = 0; bj < b.ny; ++bj)
+    for (int bi = 0; bi < b.nx; ++bi) {
+      if (!b.active[b.index(bi, bj)]) continue;
+      const int x0 = std::max(1, b.x0(bi)), x1 = std::min(b.x1(bi, w), w - 1);
+      NoiseMoments m;
+      for (int y = std::max(1, b.y0(bj)); y < std::min(b.y1(bj, g.h), g.h - 1); ++y) {
+        const double* v = noise.data() + g.index(0, y);
+        const std::uint8_t* c = con.data() + g.index(0, y);
+        double n = 0, q = 0, qq = 0, cv = 0;
+#pragma omp simd reduction(+ : n, q, qq, cv)
+        for (int x = x0; x < x1; ++x) {
+          const double unknown = 1.0 - c[x];  // arithmetic, not a select: it vectorises
+          const double dxx = v[x - 1] - 2.0 * v[x] + v[x + 1], dyy = v[x - w] - 2.0 * v[x] + v[x + w];
+          const double lq = dxx + dyy;
+          n += unknown;
+          q += unknown * lq;
+          qq += unknown * (lq * lq);
+          cv += unknown * (dxx * dxx + dyy * dyy);
+        }
+        m.add(NoiseMoments{n, q, qq, cv});
+      }
+      out[b.index(bi, bj)] = m;
+    }
+  return out;
+}
 
-RoughnessModel estimate_roughness(const RoughField& grid) {
+// H and the field's curvature from its semivariogram.
+RoughnessModel model_of(const Variogram& vg) {
   RoughnessModel m;
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0, g1 = 0, g2 = 0;
-  std::size_t pairs1 = 0;
-  const Variogram vg = semivariogram(grid);
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0, g1 = 0, g2 = 0, pairs1 = 0;
   for (int k = 0, d = 1; k < kVariogramLags; ++k, d *= 2) {
-    const std::size_t pairs = vg.pairs[k];
+    const double pairs = vg.pairs[k];
     const double gamma = vg.gamma[k];
     if (pairs < 30 || gamma <= 0) continue;
     if (d == 1) { g1 = gamma; pairs1 = pairs; }
@@ -333,10 +399,16 @@ RoughnessModel estimate_roughness(const RoughField& grid) {
   // that extrapolation (also where 8γ(1) - 2γ(2) is not positive).
   const double empirical = 8.0 * g1 - 2.0 * g2;
   const double fbm_form = kFbmToTerrain * g1 * (8.0 - 2.0 * std::pow(4.0, m.H));
-  const double trust = empirical > 0 ? smoothstep((static_cast<double>(pairs1) - kDensePairs / 10) / (0.9 * kDensePairs)) : 0.0;
+  const double trust = empirical > 0 ? smoothstep((pairs1 - kDensePairs / 10) / (0.9 * kDensePairs)) : 0.0;
   m.curvature = trust * empirical + (1.0 - trust) * fbm_form;
   m.valid = m.curvature > 0;
   return m;
+}
+
+}  // namespace
+
+RoughnessModel estimate_roughness(const RoughField& grid) {
+  return model_of(variogram_of(pair_sums(grid, constraint_mask(grid), block_lattice(grid), 1)));
 }
 
 RoughnessModel estimate_roughness(const Grid& grid) { return estimate_roughness(RoughField::of(grid)); }
@@ -351,20 +423,10 @@ namespace {
 // kMaxRadius blocks (scattered samples, the middle of huge voids), the target
 // blends into the global one. Blocks without unknown cells take the mean of
 // their neighbours with one (they only support the interpolation).
-std::vector<double> block_scales(const RoughField& grid, const Blocks& blocks, const std::vector<double>& noise,
+std::vector<double> block_scales(const Blocks& blocks, const LagTable& lags, const std::vector<NoiseMoments>& lap,
                                  const RoughnessModel& global, double global_scale) {
-  const int w = grid.w, nbx = blocks.nx, nby = blocks.ny;
-  const LagTable lags(grid, blocks);
+  const int nbx = blocks.nx, nby = blocks.ny;
   const double global_target = kLapPerCurvature * 2.0 * global.curvature;
-  std::vector<LapMoments> lap(static_cast<std::size_t>(nbx) * nby);
-  for (int y = 1; y < grid.h - 1; ++y)
-    for (int x = 1; x < w - 1; ++x) {
-      if (is_constraint(grid.state_at(x, y))) continue;
-      const std::size_t i = grid.index(x, y);
-      const double lq = noise[i - 1] + noise[i + 1] + noise[i - w] + noise[i + w] - 4.0 * noise[i];
-      LapMoments& m = lap[blocks.index(blocks.bx(x), blocks.by(y))];
-      m.n += 1; m.q += lq; m.qq += lq * lq;
-    }
   std::vector<double> scale(static_cast<std::size_t>(nbx) * nby, -1.0);
   for (int bj = 0; bj < nby; ++bj)
     for (int bi = 0; bi < nbx; ++bi) {
@@ -372,16 +434,17 @@ std::vector<double> block_scales(const RoughField& grid, const Blocks& blocks, c
       LagSums around;
       for (int r = 1; r <= kMaxRadius; ++r) {
         around = lags.box(bi - r, bj - r, bi + r, bj + r);
-        if (around.min_count() >= kMinPairs) break;
+        if (around.min_laplacian_count() >= kMinPairs) break;
       }
       const double local = around.laplacian_variance();
-      const double trust = local > 0 ? smoothstep((around.min_count() - 0.25 * kMinPairs) / (0.75 * kMinPairs)) : 0.0;
+      const double trust =
+          local > 0 ? smoothstep((around.min_laplacian_count() - 0.25 * kMinPairs) / (0.75 * kMinPairs)) : 0.0;
       const double target = trust * local + (1.0 - trust) * global_target;
-      LapMoments m;
+      NoiseMoments m;
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di)
           if (blocks.inside(bi + di, bj + dj)) m.add(lap[blocks.index(bi + di, bj + dj)]);
-      const double vq = m.var();
+      const double vq = m.laplacian_var();
       scale[blocks.index(bi, bj)] = vq > 0 ? std::sqrt(target / vq) : global_scale;
     }
   std::vector<double> filled = scale;
@@ -401,43 +464,51 @@ std::vector<double> block_scales(const RoughField& grid, const Blocks& blocks, c
 }
 
 // noise × the block scales interpolated bilinearly between block centres (a
-// smooth amplitude field), in place.
+// smooth amplitude field), in place; the noise lies in active blocks only.
 void scale_noise(const RoughField& grid, const Blocks& blocks, const std::vector<double>& scales,
-                 std::vector<double>& noise) {
+                 std::vector<double>& noise, int threads) {
   const auto at = [&](int bi, int bj) {
     return scales[blocks.index(std::clamp(bi, 0, blocks.nx - 1), std::clamp(bj, 0, blocks.ny - 1))];
   };
-  for (int y = 0; y < grid.h; ++y) {
-    const double fy = (y + blocks.oy + 0.5) / kBlock - 0.5;
-    const int bj = static_cast<int>(std::floor(fy));
-    const double ty = fy - bj;
-    for (int x = 0; x < grid.w; ++x) {
-      double& v = noise[grid.index(x, y)];
-      if (v == 0.0) continue;
-      const double fx = (x + blocks.ox + 0.5) / kBlock - 0.5;
-      const int bi = static_cast<int>(std::floor(fx));
-      const double tx = fx - bi;
-      v *= (1 - ty) * ((1 - tx) * at(bi, bj) + tx * at(bi + 1, bj)) +
-           ty * ((1 - tx) * at(bi, bj + 1) + tx * at(bi + 1, bj + 1));
+#pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
+  for (int bj = 0; bj < blocks.ny; ++bj)
+    for (int bi = 0; bi < blocks.nx; ++bi) {
+      if (!blocks.active[blocks.index(bi, bj)]) continue;
+      for (int y = blocks.y0(bj); y < blocks.y1(bj, grid.h); ++y) {
+        const double fy = (y + blocks.oy + 0.5) / kBlock - 0.5;
+        const int cj = static_cast<int>(std::floor(fy));
+        const double ty = fy - cj;
+        for (int x = blocks.x0(bi); x < blocks.x1(bi, grid.w); ++x) {
+          double& v = noise[grid.index(x, y)];
+          if (v == 0.0) continue;
+          const double fx = (x + blocks.ox + 0.5) / kBlock - 0.5;
+          const int ci = static_cast<int>(std::floor(fx));
+          const double tx = fx - ci;
+          v *= (1 - ty) * ((1 - tx) * at(ci, cj) + tx * at(ci + 1, cj)) +
+               ty * ((1 - tx) * at(ci, cj + 1) + tx * at(ci + 1, cj + 1));
+        }
+      }
     }
-  }
 }
 
 }  // namespace
 
 std::vector<double> roughness_displacement(const RoughField& grid, const FillParams& params, int threads) {
+  if (!adds_roughness(params)) return {};
+  const std::vector<std::uint8_t> con = constraint_mask(grid);
+  Blocks blocks = block_lattice(grid);
+  std::vector<LagSums> pairs;
   double H = params.H;
   RoughnessModel global;
   if (params.rs_auto) {
-    global = estimate_roughness(grid);
+    pairs = pair_sums(grid, con, blocks, threads);
+    global = model_of(variogram_of(pairs));
     if (!global.valid) return {};
     H = global.H;
-  } else if (!(params.rs > 0)) {
-    return {};
   }
   // Unconditioned noise at the noise cells only (0 elsewhere).
-  const std::vector<std::uint8_t> mask = noise_cells(grid);
-  const Blocks blocks = noise_blocks(grid, mask);
+  const std::vector<std::uint8_t> mask = noise_cells(con, grid.w, grid.h);
+  mark_active(grid, mask, blocks);
   std::vector<double> noise(grid.cells(), 0.0);
   add_noise(grid, blocks, mask, params.seed, H, noise, threads);
   if (!params.rs_auto) {  // the coarsest octave's amplitude is rs · unit
@@ -449,9 +520,13 @@ std::vector<double> roughness_displacement(const RoughField& grid, const FillPar
   }
   // Global calibration: the noise's second-difference variance is kStrength²
   // of the terrain's; local targets per block where there are pairs enough.
-  const double c = curvature_of(noise, grid);
+  const std::vector<NoiseMoments> moments = noise_moments(grid, con, blocks, noise, threads);
+  NoiseMoments all;
+  for (const NoiseMoments& m : moments) all.add(m);
+  const double c = all.n > 0 ? all.curvature / (2.0 * all.n) : 0.0;
   const double global_scale = c > 0 ? kStrength * std::sqrt(global.curvature / c) : 0.0;
-  scale_noise(grid, blocks, block_scales(grid, blocks, noise, global, global_scale), noise);
+  scale_noise(grid, blocks, block_scales(blocks, LagTable(pairs, blocks), moments, global, global_scale), noise,
+              threads);
   return noise;
 }
 

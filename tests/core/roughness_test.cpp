@@ -83,6 +83,22 @@ TEST(Roughness, AutoIsDeterministicPerSeed) {
     }
 }
 
+// The displacement's statistics and noise run in block rows on the given
+// threads: the same bits for any count.
+TEST(Roughness, AutoDisplacementIsThreadCountIndependent) {
+  Grid g = fbm(8, 0.6, 4);
+  punch_disc(g, 90, 100, 30);
+  punch_disc(g, 190, 160, 12);
+  const mcmd::RoughField field = mcmd::RoughField::of(g);
+  const std::vector<double> one = mcmd::roughness_displacement(field, auto_params(3), 1);
+  ASSERT_EQ(one.size(), g.cell_count());
+  for (int threads : {2, 3}) {
+    const std::vector<double> many = mcmd::roughness_displacement(field, auto_params(3), threads);
+    ASSERT_EQ(many.size(), one.size());
+    EXPECT_EQ(std::memcmp(one.data(), many.data(), one.size() * sizeof(double)), 0) << threads << " threads";
+  }
+}
+
 TEST(Roughness, EstimatesHOfAnFbmSurface) {
   for (double H : {0.4, 0.8}) {
     const mcmd::RoughnessModel m = mcmd::estimate_roughness(fbm(8, H, 2));
