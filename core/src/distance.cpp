@@ -82,8 +82,8 @@ std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h) {
 
 namespace {
 
-// In place over n items of `step` bytes each (the first and last `pad` items
-// zero): item i becomes the OR of items i .. i + width - 1. The window doubles
+// In place over n items of `step` bytes each: item i becomes the OR of items
+// i .. i + width - 1 (those past the end count as zero). The window doubles
 // per pass, then one pass tops it up to `width`: byte ORs over contiguous
 // memory, which vectorise.
 void or_windows(std::uint8_t* items, std::size_t n, std::size_t step, std::size_t width) {
