@@ -41,22 +41,21 @@ void transform_1d(const double* f, double* d, int n, std::vector<int>& v, std::v
   }
 }
 
-// Per cell, the distance to the nearest valid cell in its column, at most
-// `cap` (cells with none get cap), by a downward and an upward scan over
-// whole rows (cache-friendly; exact on a binary image).
-template <class T>
-std::vector<T> column_distance(const std::uint8_t* valid, int w, int h, T cap) {
+// Per cell, the distance to the nearest valid cell in its column (+infinity
+// where none), by a downward and an upward scan over whole rows
+// (cache-friendly; exact on a binary image).
+std::vector<double> column_distance(const std::uint8_t* valid, int w, int h) {
   const std::size_t W = static_cast<std::size_t>(w);
-  std::vector<T> d(W * static_cast<std::size_t>(h));
+  std::vector<double> d(W * static_cast<std::size_t>(h));
   for (int y = 0; y < h; ++y) {
-    T* row = d.data() + y * W;
-    const T* above = y > 0 ? row - W : nullptr;
+    double* row = d.data() + y * W;
+    const double* above = y > 0 ? row - W : nullptr;
     const std::uint8_t* ok = valid + y * W;
-    for (std::size_t x = 0; x < W; ++x) row[x] = ok[x] ? T{0} : (above ? std::min(cap, above[x] + T{1}) : cap);
+    for (std::size_t x = 0; x < W; ++x) row[x] = ok[x] ? 0.0 : (above ? above[x] + 1.0 : kInf);
   }
   for (int y = h - 2; y >= 0; --y) {
-    T* row = d.data() + y * W;
-    for (std::size_t x = 0; x < W; ++x) row[x] = std::min(row[x], row[x + W] + T{1});
+    double* row = d.data() + y * W;
+    for (std::size_t x = 0; x < W; ++x) row[x] = std::min(row[x], row[x + W] + 1.0);
   }
   return d;
 }
@@ -66,7 +65,7 @@ std::vector<T> column_distance(const std::uint8_t* valid, int w, int h, T cap) {
 std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h) {
   const std::size_t W = static_cast<std::size_t>(w);
   // Columns first (the column pass's exact result), squared for the rows.
-  std::vector<double> sq = column_distance(valid, w, h, kInf);
+  std::vector<double> sq = column_distance(valid, w, h);
   for (double& s : sq) s *= s;
   const int longest = w > h ? w : h;
   std::vector<int> v(longest);

@@ -20,8 +20,8 @@ std::vector<std::uint8_t> within_chebyshev(const std::uint8_t* valid, int w, int
 
 // Whether every cell of the w×h raster has a valid cell within r along both
 // axes at once (Chebyshev distance <= r, so Euclidean <= r·√2): a cheap bound
-// (a few integer scans) that spares the transform where every cell is near
-// data, such as scattered samples. Pre: r >= 0, valid holds w·h flags.
+// (within_chebyshev's byte passes) that spares the transform where every cell
+// is near data, such as scattered samples. Pre: r >= 0, valid holds w·h flags.
 bool all_within_chebyshev(const std::uint8_t* valid, int w, int h, int r);
 
 }  // namespace mcmd

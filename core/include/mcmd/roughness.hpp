@@ -20,9 +20,6 @@ struct RoughField {
   const CellState* state = nullptr;
   std::size_t cells() const { return static_cast<std::size_t>(w) * static_cast<std::size_t>(h); }
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
-  bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < w && y < h; }
-  double z_at(int x, int y) const { return z[index(x, y)]; }
-  CellState state_at(int x, int y) const { return state[index(x, y)]; }
   static RoughField of(const Grid& g) {
     return RoughField{g.side(), g.side(), g.origin_x(), g.origin_y(), g.elevations().data(), g.states().data()};
   }
