@@ -123,12 +123,12 @@ void add_octave(std::uint64_t seed, int j, double weight, long long gx0, long lo
     u = c * gx + sn * gy + ox;
     v = -sn * gx + c * gy + oy;
   };
-  const std::uint64_t key = seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1);
+  const UniformHash hash(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1));
   if (j == 0) {  // unrotated, unit spacing: every cell is a node, the spline its value
     for (long long gy = gy0; gy < gy1; ++gy)
       for (long long gx = gx0; gx < gx1; ++gx)
         if (mask[(gy - gy0) * stride + (gx - gx0)])
-          out[(gy - gy0) * stride + (gx - gx0)] += weight * (std::sqrt(3.0) * hash_uniform(key, gx, gy));
+          out[(gy - gy0) * stride + (gx - gx0)] += weight * (std::sqrt(3.0) * hash(gx, gy));
     return;
   }
   // Node box covering the corners in (u, v).
@@ -145,8 +145,7 @@ void add_octave(std::uint64_t seed, int j, double weight, long long gx0, long lo
   const int nu = static_cast<int>(std::floor(umax) - i0) + 3, nv = static_cast<int>(std::floor(vmax) - j0) + 3;
   node.resize(static_cast<std::size_t>(nu) * nv);
   for (int b = 0; b < nv; ++b)
-    for (int a = 0; a < nu; ++a)
-      node[static_cast<std::size_t>(b) * nu + a] = std::sqrt(3.0) * hash_uniform(key, i0 + a, j0 + b);
+    for (int a = 0; a < nu; ++a) node[static_cast<std::size_t>(b) * nu + a] = std::sqrt(3.0) * hash(i0 + a, j0 + b);
   for (long long gy = gy0; gy < gy1; ++gy) {
     const std::uint8_t* m = mask + (gy - gy0) * stride;
     double* o = out + (gy - gy0) * stride;

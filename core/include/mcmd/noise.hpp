@@ -7,6 +7,42 @@
 
 namespace mcmd {
 
+namespace noise_detail {
+
+// SplitMix64 finaliser: a strong 64-bit mixer, so neighbouring coordinates
+// give unrelated values.
+inline std::uint64_t mix(std::uint64_t v) {
+  v += 0x9E3779B97F4A7C15ull;
+  v = (v ^ (v >> 30)) * 0xBF58476D1CE4E5B9ull;
+  v = (v ^ (v >> 27)) * 0x94D049BB133111EBull;
+  return v ^ (v >> 31);
+}
+
+// The seed of one of a key's independent streams.
+inline std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t stream) {
+  return mix(seed ^ (stream * 0xD6E8FEB86659FD93ull));
+}
+
+// Uniform in [0, 1) from the top 53 bits.
+inline double unit(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; }
+
+}  // namespace noise_detail
+
+// hash_uniform of one seed, the seed's mixing done once: for loops over many
+// cells (the noise octaves), inline.
+class UniformHash {
+ public:
+  explicit UniformHash(std::uint64_t seed) : key_(noise_detail::stream_seed(seed, 1)) {}
+  double operator()(std::int64_t gx, std::int64_t gy) const {
+    using noise_detail::mix;
+    return 2.0 * noise_detail::unit(mix(mix(key_ ^ static_cast<std::uint64_t>(gx)) ^ static_cast<std::uint64_t>(gy))) -
+           1.0;
+  }
+
+ private:
+  std::uint64_t key_;
+};
+
 // Uniform in [-1, 1], a pure function of its arguments.
 double hash_uniform(std::uint64_t seed, std::int64_t gx, std::int64_t gy);
 
