@@ -197,6 +197,10 @@ constexpr int kLags = 12;
 constexpr int kLaplacianLags = 6;
 constexpr int kLagDx[kLags] = {1, 0, 2, 0, 1, 1, 4, 0, 8, 0, 16, 0};
 constexpr int kLagDy[kLags] = {0, 1, 0, 2, 1, -1, 0, 4, 0, 8, 0, 16};
+// The long lags (4, 8, 16) only feed the field-wide semivariogram (H): their
+// pairs are taken on every kLongLagRowStep-th raster row (still thousands in
+// any field that has enough pairs at all).
+constexpr int kLongLagRowStep = 4;
 constexpr int kVariogramLags = 5;  // distances 1, 2, 4, 8, 16: lags kVariogramPair[k]
 constexpr int kVariogramPair[kVariogramLags][2] = {{0, 1}, {2, 3}, {6, 7}, {8, 9}, {10, 11}};
 // Pairs per lag before a neighbourhood's estimate is trusted: the Laplacian
@@ -261,6 +265,7 @@ void block_row_pairs(const RoughField& g, const std::vector<std::uint8_t>& con, 
     for (int l = 0; l < kLags; ++l) {
       const int dx = kLagDx[l], py = y + kLagDy[l];
       if (py < 0 || py >= g.h || dx >= g.w) continue;
+      if (l >= kLaplacianLags && positive_mod(g.y0 + y, kLongLagRowStep) != 0) continue;
       for (int bi = 0; bi < b.nx; ++bi) {
         const int x0 = b.x0(bi), x1 = std::min(b.x1(bi, g.w), g.w - dx);
         if (x1 <= x0) continue;
