@@ -236,8 +236,8 @@ constexpr int kLaplacianLags = 6;
 constexpr int kLagDx[kLags] = {1, 0, 2, 0, 1, 1, 4, 0, 8, 0, 16, 0};
 constexpr int kLagDy[kLags] = {0, 1, 0, 2, 1, -1, 0, 4, 0, 8, 0, 16};
 // The long lags (4, 8, 16) only feed the field-wide semivariogram (H): their
-// pairs are taken on every kLongLagRowStep-th raster row (still thousands in
-// any field that has enough pairs at all).
+// pairs are taken on every kLongLagRowStep-th raster row (a quarter of them;
+// model_of uses a lag from 30 pairs).
 constexpr int kLongLagRowStep = 4;
 constexpr int kVariogramLags = 5;  // distances 1, 2, 4, 8, 16: lags kVariogramPair[k]
 constexpr int kVariogramPair[kVariogramLags][2] = {{0, 1}, {2, 3}, {6, 7}, {8, 9}, {10, 11}};
