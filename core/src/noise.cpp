@@ -5,22 +5,12 @@
 
 namespace mcmd {
 
-namespace {
-
-std::uint64_t hash3(std::uint64_t seed, std::int64_t gx, std::int64_t gy, std::uint64_t stream) {
-  using noise_detail::mix;
-  return mix(mix(noise_detail::stream_seed(seed, stream) ^ static_cast<std::uint64_t>(gx)) ^
-             static_cast<std::uint64_t>(gy));
-}
-
-}  // namespace
-
 double hash_uniform(std::uint64_t seed, std::int64_t gx, std::int64_t gy) { return UniformHash(seed)(gx, gy); }
 
 double hash_normal(std::uint64_t seed, std::int64_t gx, std::int64_t gy) {
   // Box-Muller on two independent streams of the same key.
-  const double u1 = 1.0 - noise_detail::unit(hash3(seed, gx, gy, 2));  // (0, 1]
-  const double u2 = noise_detail::unit(hash3(seed, gx, gy, 3));
+  const double u1 = 1.0 - noise_detail::unit(UniformHash(seed, 2).bits(gx, gy));  // (0, 1]
+  const double u2 = noise_detail::unit(UniformHash(seed, 3).bits(gx, gy));
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 

@@ -29,15 +29,17 @@ inline double unit(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.
 }  // namespace noise_detail
 
 // hash_uniform of one seed, the seed's mixing done once: for loops over many
-// cells (the noise octaves), inline.
+// cells (the noise octaves), inline. Other streams of the same seed give
+// independent values (hash_normal's).
 class UniformHash {
  public:
-  explicit UniformHash(std::uint64_t seed) : key_(noise_detail::stream_seed(seed, 1)) {}
-  double operator()(std::int64_t gx, std::int64_t gy) const {
+  explicit UniformHash(std::uint64_t seed, std::uint64_t stream = 1) : key_(noise_detail::stream_seed(seed, stream)) {}
+  // 64 hashed bits of a cell.
+  std::uint64_t bits(std::int64_t gx, std::int64_t gy) const {
     using noise_detail::mix;
-    return 2.0 * noise_detail::unit(mix(mix(key_ ^ static_cast<std::uint64_t>(gx)) ^ static_cast<std::uint64_t>(gy))) -
-           1.0;
+    return mix(mix(key_ ^ static_cast<std::uint64_t>(gx)) ^ static_cast<std::uint64_t>(gy));
   }
+  double operator()(std::int64_t gx, std::int64_t gy) const { return 2.0 * noise_detail::unit(bits(gx, gy)) - 1.0; }
 
  private:
   std::uint64_t key_;
