@@ -50,24 +50,29 @@ struct Blocks {
 
 int positive_mod(long long v, int m) { return static_cast<int>(((v % m) + m) % m); }
 
-// The cells whose noise a fill uses: its unknown cells and the constraints
-// within kNoiseReach cells (Chebyshev) of one. The discrete thin plate at an
+// The cells whose noise a fill uses: its wanted unknown cells (targets) and the
+// cells within kNoiseReach cells (Chebyshev) of one. The discrete thin plate at an
 // unknown cell involves no constraint farther than 2 cells; the finest
 // level's pull towards the cascade (length 8) sees farther, through the coarse
 // levels, and a reach of 2 let the noise's coarse octaves through deep inside
 // large voids (blob RMSE median 0.941 at 8, 0.955 at 2, 0.938 at 16 and with
 // whole 32² blocks around the voids: docs/default-method.md).
 constexpr int kNoiseReach = 8;
-std::vector<std::uint8_t> noise_cells(const std::vector<std::uint8_t>& constraint, int w, int h) {
-  std::vector<std::uint8_t> unknown(constraint.size());
-  for (std::size_t i = 0; i < unknown.size(); ++i) unknown[i] = !constraint[i];
-  return within_chebyshev(unknown.data(), w, h, kNoiseReach);
+std::vector<std::uint8_t> noise_cells(const std::vector<std::uint8_t>& target, int w, int h) {
+  return within_chebyshev(target.data(), w, h, kNoiseReach);
 }
 
 std::vector<std::uint8_t> constraint_mask(const RoughField& g) {
   std::vector<std::uint8_t> c(g.cells());
   for (std::size_t i = 0; i < c.size(); ++i) c[i] = is_constraint(g.state[i]);
   return c;
+}
+
+// The unknown cells the noise is made for: those the caller wants.
+std::vector<std::uint8_t> target_mask(const RoughField& g, const std::vector<std::uint8_t>& constraint) {
+  std::vector<std::uint8_t> t(g.cells());
+  for (std::size_t i = 0; i < t.size(); ++i) t[i] = !constraint[i] && (!g.wanted || g.wanted[i]);
+  return t;
 }
 
 // The block lattice of a field, no block active.
@@ -203,8 +208,28 @@ void add_octave(std::uint64_t seed, int j, double weight, long long gx0, long lo
   }
 }
 
+// The bounding box [x0, x1) × [y0, y1) of the `mask` cells in a rectangle
+// (empty: x1 <= x0).
+struct Rect {
+  int x0, x1, y0, y1;
+};
+Rect mask_bounds(const RoughField& g, const std::vector<std::uint8_t>& mask, Rect r) {
+  Rect b{r.x1, r.x0, r.y1, r.y0};
+  for (int y = r.y0; y < r.y1; ++y) {
+    const std::uint8_t* m = mask.data() + g.index(0, y);
+    int first = r.x0;
+    while (first < r.x1 && !m[first]) ++first;
+    if (first == r.x1) continue;
+    int last = r.x1 - 1;
+    while (!m[last]) --last;
+    b = Rect{std::min(b.x0, first), std::max(b.x1, last + 1), std::min(b.y0, y), y + 1};
+  }
+  return b;
+}
+
 // The noise, octave j weighted 2^(jH), added to `out` at the cells of `mask`,
-// block by block (active blocks only), block rows on `threads` threads (a
+// block by block (active blocks only, over the box of their mask cells: the
+// coarse octaves' nodes cover the box), block rows on `threads` threads (a
 // lone field's noise, e.g. 3 % kept cells: each cell is written by one block,
 // the same bits for any count).
 void add_noise(const RoughField& g, const Blocks& blocks, const std::vector<std::uint8_t>& mask, std::uint64_t seed,
@@ -214,12 +239,11 @@ void add_noise(const RoughField& g, const Blocks& blocks, const std::vector<std:
     std::vector<double> node;
     for (int bi = 0; bi < blocks.nx; ++bi) {
       if (!blocks.active[blocks.index(bi, bj)]) continue;
-      const int x0 = blocks.x0(bi), x1 = blocks.x1(bi, g.w);
-      const int y0 = blocks.y0(bj), y1 = blocks.y1(bj, g.h);
-      if (x1 <= x0 || y1 <= y0) continue;
+      const Rect r = mask_bounds(g, mask, Rect{blocks.x0(bi), blocks.x1(bi, g.w), blocks.y0(bj), blocks.y1(bj, g.h)});
+      if (r.x1 <= r.x0 || r.y1 <= r.y0) continue;
       for (int j = 0; j < kOctaves; ++j)
-        add_octave(seed, j, std::exp2(j * H), g.x0 + x0, g.x0 + x1, g.y0 + y0, g.y0 + y1, mask.data() + g.index(x0, y0),
-                   out.data() + g.index(x0, y0), g.w, node);
+        add_octave(seed, j, std::exp2(j * H), g.x0 + r.x0, g.x0 + r.x1, g.y0 + r.y0, g.y0 + r.y1,
+                   mask.data() + g.index(r.x0, r.y0), out.data() + g.index(r.x0, r.y0), g.w, node);
     }
   }
 }
@@ -377,7 +401,7 @@ class LagTable {
   std::vector<LagSums> sat_;
 };
 
-// The noise's second differences over the unknown cells of one block: the
+// The noise's second differences over the target cells of one block: the
 // moments of its 5-point Laplacian, and Σ(dxx² + dyy²).
 struct NoiseMoments {
   double n = 0, q = 0, qq = 0, curvature = 0;
@@ -385,9 +409,9 @@ struct NoiseMoments {
   double laplacian_var() const { return n > 1 ? std::max(0.0, qq / n - (q / n) * (q / n)) : 0.0; }
 };
 
-// Per active block (unknown cells lie in active blocks only), block rows on
+// Per active block (target cells lie in active blocks only), block rows on
 // `threads` threads; each row segment a pass that vectorises.
-std::vector<NoiseMoments> noise_moments(const RoughField& g, const std::vector<std::uint8_t>& con, const Blocks& b,
+std::vector<NoiseMoments> noise_moments(const RoughField& g, const std::vector<std::uint8_t>& target, const Blocks& b,
                                         const std::vector<double>& noise, int threads) {
   std::vector<NoiseMoments> out(static_cast<std::size_t>(b.nx) * b.ny);
   const int w = g.w;
@@ -399,11 +423,11 @@ std::vector<NoiseMoments> noise_moments(const RoughField& g, const std::vector<s
       NoiseMoments m;
       for (int y = std::max(1, b.y0(bj)); y < std::min(b.y1(bj, g.h), g.h - 1); ++y) {
         const double* v = noise.data() + g.index(0, y);
-        const std::uint8_t* c = con.data() + g.index(0, y);
+        const std::uint8_t* t = target.data() + g.index(0, y);
         double n = 0, q = 0, qq = 0, cv = 0;
 #pragma omp simd reduction(+ : n, q, qq, cv)
         for (int x = x0; x < x1; ++x) {
-          const double unknown = 1.0 - c[x];  // arithmetic, not a select: it vectorises
+          const double unknown = t[x];  // arithmetic, not a select: it vectorises
           const double dxx = v[x - 1] - 2.0 * v[x] + v[x + 1], dyy = v[x - w] - 2.0 * v[x] + v[x + w];
           const double lq = dxx + dyy;
           n += unknown;
@@ -457,13 +481,13 @@ RoughnessModel estimate_roughness(const Grid& grid) { return estimate_roughness(
 
 namespace {
 
-// -rs auto: the noise's scale per block. Each block with voids gets the
+// -rs auto: the noise's scale per block. Each block with target cells gets the
 // Laplacian variance of the terrain around it (directional semivariogram of
 // the constraint pairs in the smallest square of blocks with kMinPairs pairs
-// per lag) and the scale that gives the noise that variance over the unknown
+// per lag) and the scale that gives the noise that variance over the target
 // cells of the block and its 8 neighbours. Where the pairs are too few within
 // kMaxRadius blocks (scattered samples, the middle of huge voids), the target
-// blends into the global one. Blocks without unknown cells take the mean of
+// blends into the global one. Blocks without target cells take the mean of
 // their neighbours with one (they only support the interpolation).
 std::vector<double> block_scales(const Blocks& blocks, const LagTable& lags, const std::vector<NoiseMoments>& lap,
                                  const RoughnessModel& global, double global_scale) {
@@ -549,7 +573,8 @@ std::vector<double> roughness_displacement(const RoughField& grid, const FillPar
     H = global.H;
   }
   // Unconditioned noise at the noise cells only (0 elsewhere).
-  const std::vector<std::uint8_t> mask = noise_cells(con, grid.w, grid.h);
+  const std::vector<std::uint8_t> target = target_mask(grid, con);
+  const std::vector<std::uint8_t> mask = noise_cells(target, grid.w, grid.h);
   mark_active(grid, mask, blocks);
   std::vector<double> noise(grid.cells(), 0.0);
   add_noise(grid, blocks, mask, params.seed, H, noise, threads);
@@ -562,7 +587,7 @@ std::vector<double> roughness_displacement(const RoughField& grid, const FillPar
   }
   // Global calibration: the noise's second-difference variance is kStrength²
   // of the terrain's; local targets per block where there are pairs enough.
-  const std::vector<NoiseMoments> moments = noise_moments(grid, con, blocks, noise, threads);
+  const std::vector<NoiseMoments> moments = noise_moments(grid, target, blocks, noise, threads);
   NoiseMoments all;
   for (const NoiseMoments& m : moments) all.add(m);
   const double c = all.n > 0 ? all.curvature / (2.0 * all.n) : 0.0;

@@ -43,15 +43,9 @@ double guide_at(const CoarseGuide& guide, const Box& rect, std::size_t i) {
 // they are pinned to the coarse guide, as deep cells are; the component is
 // then the field's only unknown. Blob RMSE ratio 0.7990 → 0.7992, half-dome
 // blobs' solves 80 → 45 ms (docs/tiling.md).
-void pin_other_voids(const Box& rect, const std::vector<VoidRun>& runs, const DeepPins& pins, std::vector<double>& z,
-                     std::vector<CellState>& state) {
+void pin_other_voids(const Box& rect, const std::vector<std::uint8_t>& own, std::size_t own_count,
+                     const DeepPins& pins, std::vector<double>& z, std::vector<CellState>& state) {
   if (!pins.guide) return;
-  const int w = rect.width();
-  const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - rect.y0) * w + (x - rect.x0); };
-  std::vector<std::uint8_t> own(state.size(), 0);
-  std::size_t own_count = 0;
-  for (const VoidRun& run : runs)
-    for (int x = run.x0; x < run.x1; ++x, ++own_count) own[at(x, run.y)] = 1;
   std::size_t others = 0;
   for (std::size_t i = 0; i < state.size(); ++i) others += state[i] == CellState::unknown && !own[i];
   if (others < std::max(own_count, kPinOthersMin)) return;
@@ -62,6 +56,16 @@ void pin_other_voids(const Box& rect, const std::vector<VoidRun>& runs, const De
     z[i] = guide_at(*guide, rect, i);
     state[i] = CellState::known;
   }
+}
+
+// The component's own cells in the field `rect` (1 byte per cell).
+std::vector<std::uint8_t> own_cells(const Box& rect, const std::vector<VoidRun>& runs) {
+  const int w = rect.width();
+  std::vector<std::uint8_t> own(static_cast<std::size_t>(w) * rect.height(), 0);
+  for (const VoidRun& run : runs)
+    std::fill_n(own.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(run.y - rect.y0) * w + (run.x0 - rect.x0)),
+                run.x1 - run.x0, std::uint8_t{1});
+  return own;
 }
 
 }  // namespace
@@ -112,8 +116,12 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
       state[i] = CellState::known;
     }
   }
-  pin_other_voids(rect, runs, pins, z, state);
+  const std::vector<std::uint8_t> own = own_cells(rect, runs);
+  std::size_t own_count = 0;
+  for (const VoidRun& run : runs) own_count += run.x1 - run.x0;
+  pin_other_voids(rect, own, own_count, pins, z, state);
   FieldView view{w, h, z.data(), state.data()};
+  view.wanted = own.data();  // the roughness is made around these only
   if (!need_dist) {
     view.farthest = reach <= schedule.shallow_reach ? reach : -1.0;  // else the solver measures
   } else if (!pinned) {  // the distances are to the constraints: pass them on

@@ -2,7 +2,9 @@
 // constraints, and roughness close to the terrain's on a synthetic fBm DEM.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <numbers>
 #include <random>
@@ -223,6 +225,38 @@ TEST(Roughness, DisplacementIsKeyedOnRasterCoordinates) {
             << "cut at " << c.x0 << ", " << c.y0 << ", cell " << x << ", " << y;
       }
   }
+}
+
+// A void's field solves other voids' cells too but keeps its own: the noise is
+// made around the wanted cells only (0 more than 8 cells from them), and with
+// every unknown cell wanted it is the displacement with no mask at all.
+TEST(Roughness, NoiseIsMadeAroundTheWantedCellsOnly) {
+  Grid g = fbm(8, 0.6, 5);
+  punch_disc(g, 70, 80, 15);    // the field's own void
+  punch_disc(g, 190, 170, 20);  // another void in the field
+  std::vector<std::uint8_t> own(g.cell_count(), 0), every(g.cell_count(), 0);
+  for (int y = 0; y < g.side(); ++y)
+    for (int x = 0; x < g.side(); ++x) {
+      const std::size_t i = g.index(x, y);
+      every[i] = g.state(x, y) == CellState::unknown;
+      own[i] = every[i] && std::hypot(x - 70.0, y - 80.0) <= 15;
+    }
+  mcmd::RoughField field = mcmd::RoughField::of(g);
+  const std::vector<double> none = mcmd::roughness_displacement(field, auto_params(9));
+  field.wanted = every.data();
+  const std::vector<double> all = mcmd::roughness_displacement(field, auto_params(9));
+  EXPECT_EQ(std::memcmp(none.data(), all.data(), none.size() * sizeof(double)), 0);
+  field.wanted = own.data();
+  const std::vector<double> mine = mcmd::roughness_displacement(field, auto_params(9));
+  ASSERT_EQ(mine.size(), g.cell_count());
+  EXPECT_NE(mine[g.index(70, 80)], 0.0);
+  EXPECT_NE(none[g.index(190, 170)], 0.0);
+  EXPECT_EQ(mine[g.index(190, 170)], 0.0);
+  for (int y = 0; y < g.side(); ++y)
+    for (int x = 0; x < g.side(); ++x)
+      if (std::max(std::abs(x - 70), std::abs(y - 80)) > 15 + 8 + 1) {
+        ASSERT_EQ(mine[g.index(x, y)], 0.0) << x << ", " << y;
+      }
 }
 
 // The roughness is conditioned on the constraints (one solve of z − d, then

@@ -4,6 +4,7 @@
 // interpolator).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "mcmd/fill.hpp"
@@ -12,12 +13,14 @@ namespace mcmd {
 
 // A w×h part of a raster (row-major) whose cell (0, 0) is raster cell (x0, y0):
 // the noise is keyed on raster coordinates, so any window or field of a
-// raster sees the same noise. Unknown cells are the non-constraint ones.
+// raster sees the same noise. Unknown cells are the non-constraint ones; the
+// noise is made for those flagged in `wanted` (null: all of them).
 struct RoughField {
   int w = 0, h = 0;
   long long x0 = 0, y0 = 0;
   const double* z = nullptr;
   const CellState* state = nullptr;
+  const std::uint8_t* wanted = nullptr;
   std::size_t cells() const { return static_cast<std::size_t>(w) * static_cast<std::size_t>(h); }
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
   static RoughField of(const Grid& g) {
@@ -42,7 +45,7 @@ RoughnessModel estimate_roughness(const RoughField& field);
 // F = S(z − d) + d (thin_plate_with_roughness): S being linear, that is
 // S(z) + (d − S(d)), the smooth fill plus the noise conditioned on the
 // constraints (0 there, growing smoothly into the voids). The noise lies at
-// the void cells and the constraints within 8 cells of one. rs_auto: H from
+// the wanted void cells and the cells within 8 cells of one. rs_auto: H from
 // estimate_roughness; the amplitude per block gives the noise the 5-point
 // Laplacian variance of the terrain around it over the block's voids (and its
 // neighbours') (directional semivariogram of the nearest constraint pairs,

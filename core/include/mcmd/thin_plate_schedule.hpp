@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "mcmd/fill.hpp"
 #include "mcmd/multigrid.hpp"
@@ -56,6 +57,10 @@ struct FieldView {
   // it). The field is taken as shallow when it is <= shallow_reach, as not
   // shallow otherwise: a loose bound only costs speed.
   double farthest = -1.0;
+  // The unknown cells whose values the caller keeps, one byte per cell (null:
+  // all of them). A void's field solves other voids' cells too; the roughness
+  // is generated around the kept ones only (roughness.hpp).
+  const std::uint8_t* wanted = nullptr;
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
   double& z_at(int x, int y) const { return z[index(x, y)]; }
   CellState state_at(int x, int y) const { return state[index(x, y)]; }
