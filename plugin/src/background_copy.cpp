@@ -1,5 +1,6 @@
 #include "background_copy.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "cli_errors.hpp"
@@ -19,7 +20,16 @@ BackgroundCopy::BackgroundCopy(GDALDriver* driver, std::string source_path, std:
 
 BackgroundCopy::~BackgroundCopy() {
   stop_ = true;
+  advance(Stage::closing);
   if (thread_.joinable()) thread_.join();
+}
+
+void BackgroundCopy::advance(Stage to) {
+  {
+    const std::lock_guard lock(mutex_);
+    stage_ = std::max(stage_, to);
+  }
+  changed_.notify_all();
 }
 
 void BackgroundCopy::run() {
@@ -39,17 +49,33 @@ void BackgroundCopy::run() {
   } catch (...) {
     failed_ = std::current_exception();
   }
+  advance(Stage::made);
+  {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [this] { return stage_ == Stage::closing; });
+  }
+  if (!out_) return;
+  log.reset();
+  out_.reset();  // flushes
+  if (log.failures() != 0)
+    failed_ = std::make_exception_ptr(
+        gdal::Failure(CPLE_FileIO, "cannot write '" + shown_ + "': " + log.first_failure()));
 }
 
 GDALDataset& BackgroundCopy::dataset() {
-  if (thread_.joinable()) thread_.join();
+  {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [this] { return stage_ != Stage::copying; });
+  }
   if (failed_) std::rethrow_exception(failed_);
   return *out_;
 }
 
 void BackgroundCopy::close() {
   dataset();
-  out_.reset();
+  advance(Stage::closing);
+  thread_.join();
+  if (failed_) std::rethrow_exception(failed_);
 }
 
 }  // namespace mcmd::cli
