@@ -13,6 +13,7 @@
 
 #include "mcmd/fill.hpp"
 #include "mcmd/roughness.hpp"
+#include "mcmd/thin_plate_schedule.hpp"
 
 namespace {
 
@@ -257,6 +258,61 @@ TEST(Roughness, NoiseIsMadeAroundTheWantedCellsOnly) {
       if (std::max(std::abs(x - 70), std::abs(y - 80)) > 15 + 8 + 1) {
         ASSERT_EQ(mine[g.index(x, y)], 0.0) << x << ", " << y;
       }
+}
+
+// Scattered samples (a random 10 % of the cells): every unknown cell lies
+// within a few cells of one, and -rs auto makes only the octaves of spacing up
+// to that depth. The fill still has the terrain's roughness.
+TEST(Roughness, ShallowFieldsKeepTheirRoughnessWithFewerOctaves) {
+  const Grid truth = fbm(8, 0.6, 6);
+  const int n = truth.side();
+  std::vector<double> z(truth.elevations());
+  std::vector<CellState> state(z.size(), CellState::unknown);
+  std::mt19937 rng(8);
+  std::bernoulli_distribution keep(0.1);
+  for (CellState& s : state)
+    if (keep(rng)) s = CellState::known;
+  double depth = 0;  // the farthest unknown cell from a sample (brute force)
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      double d = 1e9;
+      for (int v = std::max(0, y - 12); v <= std::min(n - 1, y + 12); ++v)
+        for (int u = std::max(0, x - 12); u <= std::min(n - 1, x + 12); ++u)
+          if (state[truth.index(u, v)] == CellState::known) d = std::min(d, std::hypot(u - x, v - y));
+      depth = std::max(depth, d);
+    }
+  ASSERT_LT(depth, 12);
+  mcmd::RoughField field{n, n, 0, 0, z.data(), state.data()};
+  const std::vector<double> all = mcmd::roughness_displacement(field, auto_params(4));
+  field.depth = depth;
+  const std::vector<double> shallow = mcmd::roughness_displacement(field, auto_params(4));
+  ASSERT_EQ(shallow.size(), all.size());
+  EXPECT_NE(std::memcmp(all.data(), shallow.data(), all.size() * sizeof(double)), 0);
+
+  // Laplacian variance of the fill over the terrain's, at the unknown cells.
+  const auto roughness = [&](double farthest) {
+    std::vector<double> f = z;
+    mcmd::FieldView view{n, n, f.data(), state.data()};
+    view.farthest = farthest;
+    mcmd::thin_plate_with_roughness(view, 0, 0, auto_params(4), mcmd::ThinPlateSchedule{});
+    double fill = 0, terrain = 0;
+    for (int y = 8; y < n - 8; ++y)
+      for (int x = 8; x < n - 8; ++x) {
+        if (state[truth.index(x, y)] != CellState::unknown) continue;
+        const auto lap = [&](const auto& at) {
+          return at(x - 1, y) + at(x + 1, y) + at(x, y - 1) + at(x, y + 1) - 4 * at(x, y);
+        };
+        const double lf = lap([&](int u, int v) { return f[truth.index(u, v)]; });
+        const double lt = lap([&](int u, int v) { return truth.z(u, v); });
+        fill += lf * lf;
+        terrain += lt * lt;
+      }
+    return fill / terrain;
+  };
+  const double fewer = roughness(depth), every = roughness(-1.0);
+  EXPECT_GT(fewer, 0.4);
+  EXPECT_LT(fewer, 2.5);
+  EXPECT_NEAR(fewer, every, 0.1 * every);
 }
 
 // The roughness is conditioned on the constraints (one solve of z − d, then

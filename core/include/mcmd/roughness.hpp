@@ -14,13 +14,15 @@ namespace mcmd {
 // A w×h part of a raster (row-major) whose cell (0, 0) is raster cell (x0, y0):
 // the noise is keyed on raster coordinates, so any window or field of a
 // raster sees the same noise. Unknown cells are the non-constraint ones; the
-// noise is made for those flagged in `wanted` (null: all of them).
+// noise is made for those flagged in `wanted` (null: all of them). `depth`
+// bounds the distance from any unknown cell to a constraint (< 0: unknown).
 struct RoughField {
   int w = 0, h = 0;
   long long x0 = 0, y0 = 0;
   const double* z = nullptr;
   const CellState* state = nullptr;
   const std::uint8_t* wanted = nullptr;
+  double depth = -1.0;
   std::size_t cells() const { return static_cast<std::size_t>(w) * static_cast<std::size_t>(h); }
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
   static RoughField of(const Grid& g) {
@@ -51,6 +53,8 @@ RoughnessModel estimate_roughness(const RoughField& field);
 // neighbours') (directional semivariogram of the nearest constraint pairs,
 // through a summed-area table), blending into a global target from
 // estimate_roughness's curvature where too few pairs lie within 4 blocks.
+// Only the octaves of spacing up to the field's depth are made (all when it is
+// unknown): coarser ones are taken out by the conditioning.
 // Else rs > 0: amplitude rs · noise_unit for the coarsest octave, H = params.H.
 // `threads` compute a lone field's noise (same values for any count).
 std::vector<double> roughness_displacement(const RoughField& field, const FillParams& params, int threads = 1);

@@ -55,7 +55,8 @@ struct FieldView {
   // A bound on the distance from any unknown cell to the nearest constraint
   // cell, when the caller has one (< 0: the solver measures it when it needs
   // it). The field is taken as shallow when it is <= shallow_reach, as not
-  // shallow otherwise: a loose bound only costs speed.
+  // shallow otherwise: a loose bound only costs speed. -rs auto makes no
+  // noise octave coarser than it (roughness.hpp).
   double farthest = -1.0;
   // The unknown cells whose values the caller keeps, one byte per cell (null:
   // all of them). A void's field solves other voids' cells too; the roughness
