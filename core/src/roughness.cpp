@@ -332,9 +332,13 @@ void block_row_pairs(const RoughField& g, const std::vector<std::uint8_t>& con, 
   const std::size_t first = g.index(0, ry0), cells = static_cast<std::size_t>(ry1 - ry0) * g.w;
   z.resize(cells);
   m.resize(cells);
-  for (std::size_t i = 0; i < cells; ++i) {
-    m[i] = con[first + i] ? 1.0 : 0.0;
-    z[i] = con[first + i] ? g.z[first + i] : 0.0;
+  const std::uint8_t* c = con.data() + first;
+  const double* v = g.z + first;
+#pragma omp simd
+  for (std::size_t i = 0; i < cells; ++i) {  // loads and a select on a byte: it vectorises
+    const double value = v[i];
+    m[i] = c[i];
+    z[i] = c[i] ? value : 0.0;
   }
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - ry0) * g.w + x; };
   for (int y = y0; y < y1; ++y)
