@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "mcmd/distance.hpp"
@@ -303,21 +304,33 @@ struct LagSums {
 };
 
 // One lag's pairs along a row segment of n cells: z is 0 and m 0 at the
-// non-constraint cells, m 1 at the constraints. Arithmetic only, so that it
-// vectorises (a select on a comparison does not, under IEEE traps).
+// non-constraint cells, m 1 at the constraints. Arithmetic only, two cells at
+// a time in Pair accumulators (an omp simd reduction kept its partial sums in
+// memory, a store per step).
 struct PairRun {
   double sum = 0.0, count = 0.0;
 };
 PairRun pair_run(const double* __restrict z0, const double* __restrict m0, const double* __restrict z1,
                  const double* __restrict m1, int n) {
-  double sum = 0.0, count = 0.0;
-#pragma omp simd reduction(+ : sum, count)
-  for (int x = 0; x < n; ++x) {
-    const double d = z1[x] - z0[x], m = m0[x] * m1[x];
+  const auto load = [](const double* p) {
+    Pair v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  };
+  Pair sum{}, count{};
+  int x = 0;
+  for (; x + 1 < n; x += 2) {
+    const Pair d = load(z1 + x) - load(z0 + x), m = load(m0 + x) * load(m1 + x);
     sum += m * (d * d);
     count += m;
   }
-  return {sum, count};
+  PairRun r{sum[0] + sum[1], count[0] + count[1]};
+  if (x < n) {
+    const double d = z1[x] - z0[x], m = m0[x] * m1[x];
+    r.sum += m * (d * d);
+    r.count += m;
+  }
+  return r;
 }
 
 // The pair sums of the blocks of block row bj into `out`, on a copy of its
