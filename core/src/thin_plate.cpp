@@ -299,8 +299,9 @@ void thin_plate_with_roughness(const FieldView& field, long long x0, long long y
                                const ThinPlateSchedule& schedule, const ProgressFn& progress) {
   std::vector<double> d;
   if (adds_roughness(params))
-    d = roughness_displacement(RoughField{field.w, field.h, x0, y0, field.z, field.state, field.wanted, field.farthest}, params,
-                               schedule.vcycle.threads);
+    d = roughness_displacement(
+        RoughField{field.w, field.h, x0, y0, field.z, field.state, field.wanted, field.farthest}, params,
+        schedule.vcycle.threads);
   if (d.empty()) return thin_plate_smooth(field, schedule, progress);
   // S(z − d) + d: the constraints are shifted for the solve, then restored.
   const std::size_t cells = static_cast<std::size_t>(field.w) * field.h;

@@ -62,9 +62,10 @@ void pin_other_voids(const Box& rect, const std::vector<std::uint8_t>& own, std:
 std::vector<std::uint8_t> own_cells(const Box& rect, const std::vector<VoidRun>& runs) {
   const int w = rect.width();
   std::vector<std::uint8_t> own(static_cast<std::size_t>(w) * rect.height(), 0);
-  for (const VoidRun& run : runs)
-    std::fill_n(own.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(run.y - rect.y0) * w + (run.x0 - rect.x0)),
-                run.x1 - run.x0, std::uint8_t{1});
+  for (const VoidRun& run : runs) {
+    const std::size_t first = static_cast<std::size_t>(run.y - rect.y0) * w + (run.x0 - rect.x0);
+    std::fill_n(own.begin() + static_cast<std::ptrdiff_t>(first), run.x1 - run.x0, std::uint8_t{1});
+  }
   return own;
 }
 
