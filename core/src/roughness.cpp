@@ -458,13 +458,13 @@ std::vector<NoiseMoments> noise_moments(const RoughField& g, const std::vector<s
         double n = 0, q = 0, qq = 0, cv = 0;
 #pragma omp simd reduction(+ : n, q, qq, cv)
         for (int x = x0; x < x1; ++x) {
-          const double unknown = t[x];  // arithmetic, not a select: it vectorises
+          const double weight = t[x];  // 0 or 1: arithmetic, not a select, so that it vectorises
           const double dxx = v[x - 1] - 2.0 * v[x] + v[x + 1], dyy = v[x - w] - 2.0 * v[x] + v[x + w];
           const double lq = dxx + dyy;
-          n += unknown;
-          q += unknown * lq;
-          qq += unknown * (lq * lq);
-          cv += unknown * (dxx * dxx + dyy * dyy);
+          n += weight;
+          q += weight * lq;
+          qq += weight * (lq * lq);
+          cv += weight * (dxx * dxx + dyy * dyy);
         }
         m.add(NoiseMoments{n, q, qq, cv});
       }

@@ -109,8 +109,8 @@ DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, bool m
     z.insert(z.end(), r.z.begin() + from, r.z.begin() + to);
     valid.insert(valid.end(), r.valid.begin() + from, r.valid.begin() + to);
   }
-  return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), DeepPins{[&dg, may_defer] { return dg.get(may_defer); }, dg.radius()},
-                          params, max_distance, progress, threads);
+  const DeepPins pins{[&dg, may_defer] { return dg.get(may_defer); }, dg.radius()};
+  return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), pins, params, max_distance, progress, threads);
 }
 
 // Hands out the domains, largest first, so that the last ones to finish are

@@ -55,10 +55,7 @@ std::vector<double> solve_component(const SmallComponent& c, const ComponentGrid
   const ReadRect& rect = g.rect;
   const std::size_t rw = static_cast<std::size_t>(rect.w);
   // The component's cells within the read rectangle.
-  std::vector<std::uint8_t> mine(rw * rect.h, 0);
-  for (const VoidRun& r : c.runs)
-    std::fill_n(mine.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(r.y - rect.y0) * rw + (r.x0 - rect.x0)),
-                r.x1 - r.x0, std::uint8_t{1});
+  const std::vector<std::uint8_t> mine = run_mask(c.runs, rect.x0, rect.y0, rect.w, rect.h);
 
   Grid grid(g.levels, g.ox, g.oy);
   const int side = grid.side();

@@ -6,6 +6,15 @@
 
 namespace mcmd::detail {
 
+std::vector<std::uint8_t> run_mask(const std::vector<VoidRun>& runs, int x0, int y0, int w, int h) {
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
+  for (const VoidRun& r : runs) {
+    const std::size_t first = static_cast<std::size_t>(r.y - y0) * static_cast<std::size_t>(w) + (r.x0 - x0);
+    std::fill_n(mask.begin() + static_cast<std::ptrdiff_t>(first), r.x1 - r.x0, std::uint8_t{1});
+  }
+  return mask;
+}
+
 ComponentFinder::ComponentFinder(int width, int max_extent, std::size_t max_runs)
     : width_(width), max_extent_(max_extent), max_runs_(max_runs) {}
 

@@ -30,6 +30,10 @@ struct Box {  // inclusive bounds
   int height() const { return y1 - y0 + 1; }
 };
 
+// One byte per cell of the w×h rectangle whose first cell is (x0, y0): 1
+// where one of `runs` covers it. Pre: the runs lie inside the rectangle.
+std::vector<std::uint8_t> run_mask(const std::vector<VoidRun>& runs, int x0, int y0, int w, int h);
+
 struct SmallComponent {
   Box box;
   std::vector<VoidRun> runs;  // row-major order

@@ -58,17 +58,6 @@ void pin_other_voids(const Box& rect, const std::vector<std::uint8_t>& own, std:
   }
 }
 
-// The component's own cells in the field `rect` (1 byte per cell).
-std::vector<std::uint8_t> own_cells(const Box& rect, const std::vector<VoidRun>& runs) {
-  const int w = rect.width();
-  std::vector<std::uint8_t> own(static_cast<std::size_t>(w) * rect.height(), 0);
-  for (const VoidRun& run : runs) {
-    const std::size_t first = static_cast<std::size_t>(run.y - rect.y0) * w + (run.x0 - rect.x0);
-    std::fill_n(own.begin() + static_cast<std::ptrdiff_t>(first), run.x1 - run.x0, std::uint8_t{1});
-  }
-  return own;
-}
-
 }  // namespace
 
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
@@ -117,7 +106,7 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
       state[i] = CellState::known;
     }
   }
-  const std::vector<std::uint8_t> own = own_cells(rect, runs);
+  const std::vector<std::uint8_t> own = run_mask(runs, rect.x0, rect.y0, w, h);  // the component's cells
   std::size_t own_count = 0;
   for (const VoidRun& run : runs) own_count += run.x1 - run.x0;
   pin_other_voids(rect, own, own_count, pins, z, state);
