@@ -51,6 +51,18 @@ struct Blocks {
 
 int positive_mod(long long v, int m) { return static_cast<int>(((v % m) + m) % m); }
 
+// The part of a field whose cells may carry noise: every per-cell array of
+// the noise (targets, noise cells, values) covers it, not the whole field (a
+// void's field is its void grown by a margin of up to 32 + its extent on each
+// side). Field coordinates; row-major, w wide.
+struct Area {
+  int x0 = 0, y0 = 0, w = 0, h = 0;
+  std::size_t cells() const { return static_cast<std::size_t>(w) * static_cast<std::size_t>(h); }
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x - x0);
+  }
+};
+
 // The cells whose noise a fill uses: its wanted unknown cells (targets) and the
 // cells within kNoiseReach cells (Chebyshev) of one. The discrete thin plate at an
 // unknown cell involves no constraint farther than 2 cells; the finest
@@ -59,20 +71,48 @@ int positive_mod(long long v, int m) { return static_cast<int>(((v % m) + m) % m
 // large voids (blob RMSE median 0.941 at 8, 0.955 at 2, 0.938 at 16 and with
 // whole 32² blocks around the voids: docs/default-method.md).
 constexpr int kNoiseReach = 8;
-std::vector<std::uint8_t> noise_cells(const std::vector<std::uint8_t>& target, int w, int h) {
-  return within_chebyshev(target.data(), w, h, kNoiseReach);
+std::vector<std::uint8_t> noise_cells(const std::vector<std::uint8_t>& target, const Area& a) {
+  return within_chebyshev(target.data(), a.w, a.h, kNoiseReach);
 }
 
-std::vector<std::uint8_t> constraint_mask(const RoughField& g) {
-  std::vector<std::uint8_t> c(g.cells());
-  for (std::size_t i = 0; i < c.size(); ++i) c[i] = is_constraint(g.state[i]);
-  return c;
+// Whether the cell is one the noise is made for: unknown and wanted.
+bool is_target(const RoughField& g, std::size_t i) { return !is_constraint(g.state[i]) && (!g.wanted || g.wanted[i]); }
+
+// The bounding box of the target cells (empty: x1 <= x0). With a wanted mask
+// (a void's own cells: a small part of its field), the mask's rows are
+// scanned 8 bytes at a time.
+struct Rect {
+  int x0, x1, y0, y1;
+};
+Rect target_bounds(const RoughField& g) {
+  Rect b{g.w, 0, g.h, 0};
+  for (int y = 0; y < g.h; ++y) {
+    const std::size_t row = g.index(0, y);
+    int x = 0;
+    if (g.wanted)
+      for (std::uint64_t word; x + 8 <= g.w; x += 8) {
+        std::memcpy(&word, g.wanted + row + x, sizeof word);
+        if (word) break;
+      }
+    while (x < g.w && !is_target(g, row + x)) ++x;
+    if (x == g.w) continue;
+    int last = g.w - 1;
+    if (g.wanted)
+      for (std::uint64_t word; last - 7 > x; last -= 8) {
+        std::memcpy(&word, g.wanted + row + last - 7, sizeof word);
+        if (word) break;
+      }
+    while (!is_target(g, row + last)) --last;
+    b = Rect{std::min(b.x0, x), std::max(b.x1, last + 1), std::min(b.y0, y), y + 1};
+  }
+  return b;
 }
 
-// The unknown cells the noise is made for: those the caller wants.
-std::vector<std::uint8_t> target_mask(const RoughField& g, const std::vector<std::uint8_t>& constraint) {
-  std::vector<std::uint8_t> t(g.cells());
-  for (std::size_t i = 0; i < t.size(); ++i) t[i] = !constraint[i] && (!g.wanted || g.wanted[i]);
+// The target cells of an area.
+std::vector<std::uint8_t> target_mask(const RoughField& g, const Area& a) {
+  std::vector<std::uint8_t> t(a.cells());
+  for (int y = a.y0; y < a.y0 + a.h; ++y)
+    for (int x = a.x0; x < a.x0 + a.w; ++x) t[a.index(x, y)] = is_target(g, g.index(x, y));
   return t;
 }
 
@@ -87,14 +127,15 @@ Blocks block_lattice(const RoughField& g) {
   return b;
 }
 
-// Blocks holding a cell of `mask` become active.
-void mark_active(const RoughField& g, const std::vector<std::uint8_t>& mask, Blocks& b) {
+// Blocks holding a cell of `mask` (over area `a`) become active.
+void mark_active(const RoughField& g, const Area& a, const std::vector<std::uint8_t>& mask, Blocks& b) {
   for (int bj = 0; bj < b.ny; ++bj)
     for (int bi = 0; bi < b.nx; ++bi) {
-      const int x0 = b.x0(bi), x1 = b.x1(bi, g.w);
+      const int x0 = std::max(b.x0(bi), a.x0), x1 = std::min(b.x1(bi, g.w), a.x0 + a.w);
+      const int y0 = std::max(b.y0(bj), a.y0), y1 = std::min(b.y1(bj, g.h), a.y0 + a.h);
       unsigned any = 0;
-      for (int y = b.y0(bj); y < b.y1(bj, g.h) && !any; ++y)
-        for (int x = x0; x < x1; ++x) any |= mask[g.index(x, y)];
+      for (int y = y0; y < y1 && !any; ++y)
+        for (int x = x0; x < x1; ++x) any |= mask[a.index(x, y)];
       b.active[b.index(bi, bj)] = any != 0;
     }
 }
@@ -209,42 +250,40 @@ void add_octave(std::uint64_t seed, int j, double weight, long long gx0, long lo
   }
 }
 
-// The bounding box [x0, x1) × [y0, y1) of the `mask` cells in a rectangle
+// The bounding box of the `mask` cells (over area `a`) in a rectangle of it
 // (empty: x1 <= x0).
-struct Rect {
-  int x0, x1, y0, y1;
-};
-Rect mask_bounds(const RoughField& g, const std::vector<std::uint8_t>& mask, Rect r) {
+Rect mask_bounds(const Area& a, const std::vector<std::uint8_t>& mask, Rect r) {
   Rect b{r.x1, r.x0, r.y1, r.y0};
   for (int y = r.y0; y < r.y1; ++y) {
-    const std::uint8_t* m = mask.data() + g.index(0, y);
+    const std::uint8_t* m = mask.data() + a.index(a.x0, y);
+    const auto at = [&](int x) { return m[x - a.x0]; };
     int first = r.x0;
-    while (first < r.x1 && !m[first]) ++first;
+    while (first < r.x1 && !at(first)) ++first;
     if (first == r.x1) continue;
     int last = r.x1 - 1;
-    while (!m[last]) --last;
+    while (!at(last)) --last;
     b = Rect{std::min(b.x0, first), std::max(b.x1, last + 1), std::min(b.y0, y), y + 1};
   }
   return b;
 }
 
-// The noise, octave j weighted 2^(jH), added to `out` at the cells of `mask`,
-// block by block (active blocks only, over the box of their mask cells: the
-// coarse octaves' nodes cover the box), block rows on `threads` threads (a
-// lone field's noise, e.g. 3 % kept cells: each cell is written by one block,
-// the same bits for any count).
-void add_noise(const RoughField& g, const Blocks& blocks, const std::vector<std::uint8_t>& mask, std::uint64_t seed,
-               double H, int octaves, std::vector<double>& out, int threads) {
+// The noise, octave j weighted 2^(jH), added to `out` (over area `a`) at the
+// cells of `mask`, block by block (active blocks only, over the box of their
+// mask cells: the coarse octaves' nodes cover the box), block rows on
+// `threads` threads (a lone field's noise, e.g. 3 % kept cells: each cell is
+// written by one block, the same bits for any count).
+void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const std::vector<std::uint8_t>& mask,
+               std::uint64_t seed, double H, int octaves, std::vector<double>& out, int threads) {
 #pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
   for (int bj = 0; bj < blocks.ny; ++bj) {
     std::vector<double> node;
     for (int bi = 0; bi < blocks.nx; ++bi) {
       if (!blocks.active[blocks.index(bi, bj)]) continue;
-      const Rect r = mask_bounds(g, mask, Rect{blocks.x0(bi), blocks.x1(bi, g.w), blocks.y0(bj), blocks.y1(bj, g.h)});
+      const Rect r = mask_bounds(a, mask, Rect{blocks.x0(bi), blocks.x1(bi, g.w), blocks.y0(bj), blocks.y1(bj, g.h)});
       if (r.x1 <= r.x0 || r.y1 <= r.y0) continue;
       for (int j = 0; j < octaves; ++j)
         add_octave(seed, j, std::exp2(j * H), g.x0 + r.x0, g.x0 + r.x1, g.y0 + r.y0, g.y0 + r.y1,
-                   mask.data() + g.index(r.x0, r.y0), out.data() + g.index(r.x0, r.y0), g.w, node);
+                   mask.data() + a.index(r.x0, r.y0), out.data() + a.index(r.x0, r.y0), a.w, node);
     }
   }
 }
@@ -335,7 +374,7 @@ PairRun pair_run(const double* __restrict z0, const double* __restrict m0, const
 
 // The pair sums of the blocks of block row bj into `out`, on a copy of its
 // rows and the 16 below as pair_run's z and m (buffers reused by the caller).
-void block_row_pairs(const RoughField& g, const std::vector<std::uint8_t>& con, const Blocks& b, int bj,
+void block_row_pairs(const RoughField& g, const Blocks& b, int bj,
                      std::vector<double>& z, std::vector<double>& m, std::vector<LagSums>& out) {
   constexpr int kReach = 16;  // the longest lag
   const int y0 = b.y0(bj), y1 = b.y1(bj, g.h);
@@ -345,13 +384,14 @@ void block_row_pairs(const RoughField& g, const std::vector<std::uint8_t>& con, 
   const std::size_t first = g.index(0, ry0), cells = static_cast<std::size_t>(ry1 - ry0) * g.w;
   z.resize(cells);
   m.resize(cells);
-  const std::uint8_t* c = con.data() + first;
+  const CellState* c = g.state + first;
   const double* v = g.z + first;
 #pragma omp simd
   for (std::size_t i = 0; i < cells; ++i) {  // loads and a select on a byte: it vectorises
     const double value = v[i];
-    m[i] = c[i];
-    z[i] = c[i] ? value : 0.0;
+    const bool constraint = is_constraint(c[i]);
+    m[i] = constraint;
+    z[i] = constraint ? value : 0.0;
   }
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - ry0) * g.w + x; };
   for (int y = y0; y < y1; ++y)
@@ -372,14 +412,14 @@ void block_row_pairs(const RoughField& g, const std::vector<std::uint8_t>& con, 
 
 // Per block, the pair sums of every lag; block rows on `threads` threads, each
 // block summed by one thread in a fixed order (the same bits for any count).
-std::vector<LagSums> pair_sums(const RoughField& g, const std::vector<std::uint8_t>& con, const Blocks& b,
+std::vector<LagSums> pair_sums(const RoughField& g, const Blocks& b,
                                int threads) {
   std::vector<LagSums> out(static_cast<std::size_t>(b.nx) * b.ny);
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     std::vector<double> z, m;
 #pragma omp for schedule(dynamic)
-    for (int bj = 0; bj < b.ny; ++bj) block_row_pairs(g, con, b, bj, z, m, out);
+    for (int bj = 0; bj < b.ny; ++bj) block_row_pairs(g, b, bj, z, m, out);
   }
   return out;
 }
@@ -440,26 +480,27 @@ struct NoiseMoments {
   double laplacian_var() const { return n > 1 ? std::max(0.0, qq / n - (q / n) * (q / n)) : 0.0; }
 };
 
-// Per active block (target cells lie in active blocks only), block rows on
-// `threads` threads; each row segment a pass that vectorises.
-std::vector<NoiseMoments> noise_moments(const RoughField& g, const std::vector<std::uint8_t>& target, const Blocks& b,
-                                        const std::vector<double>& noise, int threads) {
+// Per active block (target cells lie in active blocks only, inside area `a`
+// with a cell to spare around them), block rows on `threads` threads; each
+// row segment a pass that vectorises.
+std::vector<NoiseMoments> noise_moments(const RoughField& g, const Area& a, const std::vector<std::uint8_t>& target,
+                                        const Blocks& b, const std::vector<double>& noise, int threads) {
   std::vector<NoiseMoments> out(static_cast<std::size_t>(b.nx) * b.ny);
-  const int w = g.w;
+  const int w = a.w;
 #pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
   for (int bj = 0; bj < b.ny; ++bj)
     for (int bi = 0; bi < b.nx; ++bi) {
       if (!b.active[b.index(bi, bj)]) continue;
-      const int x0 = std::max(1, b.x0(bi)), x1 = std::min(b.x1(bi, w), w - 1);
+      const int x0 = std::max(1, b.x0(bi)), n_x = std::min(b.x1(bi, g.w), g.w - 1) - x0;
       NoiseMoments m;
       for (int y = std::max(1, b.y0(bj)); y < std::min(b.y1(bj, g.h), g.h - 1); ++y) {
-        const double* v = noise.data() + g.index(0, y);
-        const std::uint8_t* t = target.data() + g.index(0, y);
+        const double* v = noise.data() + a.index(x0, y);
+        const std::uint8_t* t = target.data() + a.index(x0, y);
         double n = 0, q = 0, qq = 0, cv = 0;
 #pragma omp simd reduction(+ : n, q, qq, cv)
-        for (int x = x0; x < x1; ++x) {
-          const double weight = t[x];  // 0 or 1: arithmetic, not a select, so that it vectorises
-          const double dxx = v[x - 1] - 2.0 * v[x] + v[x + 1], dyy = v[x - w] - 2.0 * v[x] + v[x + w];
+        for (int k = 0; k < n_x; ++k) {
+          const double weight = t[k];  // 0 or 1: arithmetic, not a select, so that it vectorises
+          const double dxx = v[k - 1] - 2.0 * v[k] + v[k + 1], dyy = v[k - w] - 2.0 * v[k] + v[k + w];
           const double lq = dxx + dyy;
           n += weight;
           q += weight * lq;
@@ -505,7 +546,7 @@ RoughnessModel model_of(const Variogram& vg) {
 }  // namespace
 
 RoughnessModel estimate_roughness(const RoughField& grid) {
-  return model_of(variogram_of(pair_sums(grid, constraint_mask(grid), block_lattice(grid), 1)));
+  return model_of(variogram_of(pair_sums(grid, block_lattice(grid), 1)));
 }
 
 RoughnessModel estimate_roughness(const Grid& grid) { return estimate_roughness(RoughField::of(grid)); }
@@ -560,9 +601,10 @@ std::vector<double> block_scales(const Blocks& blocks, const LagTable& lags, con
   return filled;
 }
 
-// noise × the block scales interpolated bilinearly between block centres (a
-// smooth amplitude field), in place; the noise lies in active blocks only.
-void scale_noise(const RoughField& grid, const Blocks& blocks, const std::vector<double>& scales,
+// noise (over area `a`) × the block scales interpolated bilinearly between
+// block centres (a smooth amplitude field), in place; the noise lies in
+// active blocks only.
+void scale_noise(const RoughField& grid, const Area& a, const Blocks& blocks, const std::vector<double>& scales,
                  std::vector<double>& noise, int threads) {
   const auto at = [&](int bi, int bj) {
     return scales[blocks.index(std::clamp(bi, 0, blocks.nx - 1), std::clamp(bj, 0, blocks.ny - 1))];
@@ -576,7 +618,7 @@ void scale_noise(const RoughField& grid, const Blocks& blocks, const std::vector
         const int cj = static_cast<int>(std::floor(fy));
         const double ty = fy - cj;
         for (int x = blocks.x0(bi); x < blocks.x1(bi, grid.w); ++x) {
-          double& v = noise[grid.index(x, y)];
+          double& v = noise[a.index(x, y)];
           if (v == 0.0) continue;
           const double fx = (x + blocks.ox + 0.5) / kBlock - 0.5;
           const int ci = static_cast<int>(std::floor(fx));
@@ -588,44 +630,78 @@ void scale_noise(const RoughField& grid, const Blocks& blocks, const std::vector
     }
 }
 
+// The area the noise of a field covers: its target cells grown by
+// kNoiseReach, widened to whole blocks and one cell more (the Laplacian at
+// a block's edge), inside the field. Empty without target cells.
+Area noise_area(const RoughField& g, const Blocks& b) {
+  const Rect t = target_bounds(g);
+  if (t.x1 <= t.x0) return Area{};
+  const auto block_of = [](int v, int offset) { return (v + offset) / kBlock; };
+  const int x0 = b.x0(block_of(std::max(0, t.x0 - kNoiseReach), b.ox));
+  const int x1 = b.x1(block_of(std::min(g.w, t.x1 + kNoiseReach) - 1, b.ox), g.w);
+  const int y0 = b.y0(block_of(std::max(0, t.y0 - kNoiseReach), b.oy));
+  const int y1 = b.y1(block_of(std::min(g.h, t.y1 + kNoiseReach) - 1, b.oy), g.h);
+  Area a;
+  a.x0 = std::max(0, x0 - 1);
+  a.y0 = std::max(0, y0 - 1);
+  a.w = std::min(g.w, x1 + 1) - a.x0;
+  a.h = std::min(g.h, y1 + 1) - a.y0;
+  return a;
+}
+
 }  // namespace
 
-std::vector<double> roughness_displacement(const RoughField& grid, const FillParams& params, int threads) {
+double Displacement::at(int x, int y) const {
+  if (x < x0 || y < y0 || x >= x0 + w || y >= y0 + h || values.empty()) return 0.0;
+  return values[static_cast<std::size_t>(y - y0) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x - x0)];
+}
+
+std::vector<double> Displacement::whole(int field_w, int field_h) const {
+  std::vector<double> out(static_cast<std::size_t>(field_w) * static_cast<std::size_t>(field_h), 0.0);
+  for (int y = y0; y < y0 + h && !values.empty(); ++y)
+    for (int x = x0; x < x0 + w; ++x) out[static_cast<std::size_t>(y) * field_w + x] = at(x, y);
+  return out;
+}
+
+Displacement roughness_displacement(const RoughField& grid, const FillParams& params, int threads) {
   if (!adds_roughness(params)) return {};
-  const std::vector<std::uint8_t> con = constraint_mask(grid);
   Blocks blocks = block_lattice(grid);
   std::vector<LagSums> pairs;
   double H = params.H;
   RoughnessModel global;
   if (params.rs_auto) {
-    pairs = pair_sums(grid, con, blocks, threads);
+    pairs = pair_sums(grid, blocks, threads);
     global = model_of(variogram_of(pairs));
     if (!global.valid) return {};
     H = global.H;
   }
+  const Area area = noise_area(grid, blocks);
+  if (area.cells() == 0) return {};
   // Unconditioned noise at the noise cells only (0 elsewhere).
-  const std::vector<std::uint8_t> target = target_mask(grid, con);
-  const std::vector<std::uint8_t> mask = noise_cells(target, grid.w, grid.h);
-  mark_active(grid, mask, blocks);
-  std::vector<double> noise(grid.cells(), 0.0);
-  add_noise(grid, blocks, mask, params.seed, H, params.rs_auto ? auto_octaves(grid.depth) : kOctaves, noise, threads);
+  const std::vector<std::uint8_t> target = target_mask(grid, area);
+  const std::vector<std::uint8_t> mask = noise_cells(target, area);
+  mark_active(grid, area, mask, blocks);
+  Displacement d{area.x0, area.y0, area.w, area.h, std::vector<double>(area.cells(), 0.0)};
+  std::vector<double>& noise = d.values;
+  add_noise(grid, area, blocks, mask, params.seed, H, params.rs_auto ? auto_octaves(grid.depth) : kOctaves, noise,
+            threads);
   if (!params.rs_auto) {  // the coarsest octave's amplitude is rs · unit
     const double unit = params.noise_unit > 0 ? params.noise_unit
                                               : known_range({grid.z, grid.cells()}, {grid.state, grid.cells()});
     const double scale = params.rs * unit * std::exp2(-(kOctaves - 1) * H);
     for (double& v : noise) v *= scale;
-    return noise;
+    return d;
   }
   // Global calibration: the noise's second-difference variance is kStrength²
   // of the terrain's; local targets per block where there are pairs enough.
-  const std::vector<NoiseMoments> moments = noise_moments(grid, target, blocks, noise, threads);
+  const std::vector<NoiseMoments> moments = noise_moments(grid, area, target, blocks, noise, threads);
   NoiseMoments all;
   for (const NoiseMoments& m : moments) all.add(m);
   const double c = all.n > 0 ? all.curvature / (2.0 * all.n) : 0.0;
   const double global_scale = c > 0 ? kStrength * std::sqrt(global.curvature / c) : 0.0;
-  scale_noise(grid, blocks, block_scales(blocks, LagTable(pairs, blocks), moments, global, global_scale), noise,
+  scale_noise(grid, area, blocks, block_scales(blocks, LagTable(pairs, blocks), moments, global, global_scale), noise,
               threads);
-  return noise;
+  return d;
 }
 
 }  // namespace mcmd

@@ -297,26 +297,32 @@ void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule
 
 void thin_plate_with_roughness(const FieldView& field, long long x0, long long y0, const FillParams& params,
                                const ThinPlateSchedule& schedule, const ProgressFn& progress) {
-  std::vector<double> d;
+  Displacement d;
   if (adds_roughness(params))
     d = roughness_displacement(
         RoughField{field.w, field.h, x0, y0, field.z, field.state, field.wanted, field.farthest}, params,
         schedule.vcycle.threads);
   if (d.empty()) return thin_plate_smooth(field, schedule, progress);
-  // S(z − d) + d: the constraints are shifted for the solve, then restored.
-  const std::size_t cells = static_cast<std::size_t>(field.w) * field.h;
+  // S(z − d) + d: the constraints are shifted for the solve, then restored
+  // (d is 0 outside its box).
+  const auto for_box = [&](auto&& f) {
+    for (int y = d.y0; y < d.y0 + d.h; ++y)
+      for (int x = d.x0; x < d.x0 + d.w; ++x)
+        f(static_cast<std::size_t>(y) * field.w + x, d.values[static_cast<std::size_t>(y - d.y0) * d.w + (x - d.x0)]);
+  };
   std::vector<double> kept;
-  for (std::size_t i = 0; i < cells; ++i)
-    if (is_constraint(field.state[i]) && d[i] != 0.0) {
+  for_box([&](std::size_t i, double v) {
+    if (is_constraint(field.state[i]) && v != 0.0) {
       kept.push_back(field.z[i]);
-      field.z[i] -= d[i];
+      field.z[i] -= v;
     }
+  });
   thin_plate_smooth(field, schedule, progress);
   std::size_t k = 0;
-  for (std::size_t i = 0; i < cells; ++i) {
-    if (!is_constraint(field.state[i])) field.z[i] += d[i];
-    else if (d[i] != 0.0) field.z[i] = kept[k++];
-  }
+  for_box([&](std::size_t i, double v) {
+    if (!is_constraint(field.state[i])) field.z[i] += v;
+    else if (v != 0.0) field.z[i] = kept[k++];
+  });
 }
 
 void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,

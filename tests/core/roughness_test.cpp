@@ -93,10 +93,11 @@ TEST(Roughness, AutoDisplacementIsThreadCountIndependent) {
   punch_disc(g, 90, 100, 30);
   punch_disc(g, 190, 160, 12);
   const mcmd::RoughField field = mcmd::RoughField::of(g);
-  const std::vector<double> one = mcmd::roughness_displacement(field, auto_params(3), 1);
+  const std::vector<double> one = mcmd::roughness_displacement(field, auto_params(3), 1).whole(field.w, field.h);
   ASSERT_EQ(one.size(), g.cell_count());
   for (int threads : {2, 3}) {
-    const std::vector<double> many = mcmd::roughness_displacement(field, auto_params(3), threads);
+    const std::vector<double> many =
+        mcmd::roughness_displacement(field, auto_params(3), threads).whole(field.w, field.h);
     ASSERT_EQ(many.size(), one.size());
     EXPECT_EQ(std::memcmp(one.data(), many.data(), one.size() * sizeof(double)), 0) << threads << " threads";
   }
@@ -150,9 +151,9 @@ TEST(Roughness, ManualAmplitudeScalesWithRs) {
   const mcmd::RoughField field = mcmd::RoughField::of(g);
   p.noise_unit = 100.0;
   p.rs = 0.01;
-  const std::vector<double> d1 = mcmd::roughness_displacement(field, p);
+  const std::vector<double> d1 = mcmd::roughness_displacement(field, p).whole(field.w, field.h);
   p.rs = 0.04;
-  const std::vector<double> d4 = mcmd::roughness_displacement(field, p);
+  const std::vector<double> d4 = mcmd::roughness_displacement(field, p).whole(field.w, field.h);
   ASSERT_EQ(d1.size(), d4.size());
   for (std::size_t i = 0; i < d1.size(); ++i) ASSERT_NEAR(d4[i], 4.0 * d1[i], 1e-12 * (1 + std::abs(d4[i])));
 }
@@ -211,7 +212,8 @@ TEST(Roughness, DisplacementIsKeyedOnRasterCoordinates) {
         z[static_cast<std::size_t>(y) * c.w + x] = raster.z(c.x0 + x, c.y0 + y);
         state[static_cast<std::size_t>(y) * c.w + x] = raster.state(c.x0 + x, c.y0 + y);
       }
-    return mcmd::roughness_displacement(mcmd::RoughField{c.w, c.h, c.x0, c.y0, z.data(), state.data()}, params);
+    return mcmd::roughness_displacement(mcmd::RoughField{c.w, c.h, c.x0, c.y0, z.data(), state.data()}, params)
+        .whole(c.w, c.h);
   };
   const std::vector<double> all = displacement(whole);
   ASSERT_EQ(all.size(), raster.cell_count());
@@ -243,12 +245,15 @@ TEST(Roughness, NoiseIsMadeAroundTheWantedCellsOnly) {
       own[i] = every[i] && std::hypot(x - 70.0, y - 80.0) <= 15;
     }
   mcmd::RoughField field = mcmd::RoughField::of(g);
-  const std::vector<double> none = mcmd::roughness_displacement(field, auto_params(9));
+  const std::vector<double> none = mcmd::roughness_displacement(field, auto_params(9)).whole(field.w, field.h);
   field.wanted = every.data();
-  const std::vector<double> all = mcmd::roughness_displacement(field, auto_params(9));
+  const std::vector<double> all = mcmd::roughness_displacement(field, auto_params(9)).whole(field.w, field.h);
   EXPECT_EQ(std::memcmp(none.data(), all.data(), none.size() * sizeof(double)), 0);
   field.wanted = own.data();
-  const std::vector<double> mine = mcmd::roughness_displacement(field, auto_params(9));
+  const mcmd::Displacement own_noise = mcmd::roughness_displacement(field, auto_params(9));
+  // Its box: the own void's cells grown by 8, widened to whole 32² blocks.
+  EXPECT_LE(static_cast<std::size_t>(own_noise.w) * own_noise.h, g.cell_count() / 8);
+  const std::vector<double> mine = own_noise.whole(field.w, field.h);
   ASSERT_EQ(mine.size(), g.cell_count());
   EXPECT_NE(mine[g.index(70, 80)], 0.0);
   EXPECT_NE(none[g.index(190, 170)], 0.0);
@@ -283,9 +288,9 @@ TEST(Roughness, ShallowFieldsKeepTheirRoughnessWithFewerOctaves) {
     }
   ASSERT_LT(depth, 12);
   mcmd::RoughField field{n, n, 0, 0, z.data(), state.data()};
-  const std::vector<double> all = mcmd::roughness_displacement(field, auto_params(4));
+  const std::vector<double> all = mcmd::roughness_displacement(field, auto_params(4)).whole(field.w, field.h);
   field.depth = depth;
-  const std::vector<double> shallow = mcmd::roughness_displacement(field, auto_params(4));
+  const std::vector<double> shallow = mcmd::roughness_displacement(field, auto_params(4)).whole(field.w, field.h);
   ASSERT_EQ(shallow.size(), all.size());
   EXPECT_NE(std::memcmp(all.data(), shallow.data(), all.size() * sizeof(double)), 0);
 
