@@ -38,6 +38,27 @@ TEST(Distance, MatchesBruteForceExactly) {
     }
 }
 
+// Voids inside mostly valid rasters (a void's field), touching an edge or
+// not, solid or with holes: exact, and 0 at the valid cells.
+TEST(Distance, VoidsInsideValidRastersMatchBruteForce) {
+  std::mt19937 rng(11);
+  const int w = 57, h = 43;
+  const int boxes[][4] = {{20, 15, 31, 24}, {0, 10, 8, 30}, {40, 0, 56, 5}, {25, 20, 25, 20}};
+  for (const auto& b : boxes)
+    for (double hole : {1.0, 0.7}) {
+      std::vector<std::uint8_t> valid(static_cast<std::size_t>(w) * h, 1);
+      std::bernoulli_distribution pick(hole);
+      for (int y = b[1]; y <= b[3]; ++y)
+        for (int x = b[0]; x <= b[2]; ++x)
+          if (pick(rng)) valid[static_cast<std::size_t>(y) * w + x] = 0;
+      const std::vector<double> d = mcmd::distance_to_valid(valid.data(), w, h);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          ASSERT_EQ(d[static_cast<std::size_t>(y) * w + x], brute_force(valid, w, h, x, y))
+              << "void box " << b[0] << "," << b[1] << " at " << x << "," << y;
+    }
+}
+
 // The Chebyshev dilation and bound agree with brute force: a cell is within r
 // when a valid cell lies within r along both axes; the bound is true exactly
 // when every cell is.
