@@ -418,29 +418,28 @@ struct LagSums {
 };
 
 // One lag's pairs along a row segment of n cells: z is 0 and m 0 at the
-// non-constraint cells, m 1 at the constraints. Arithmetic only, two cells at
-// a time in Pair accumulators (an omp simd reduction kept its partial sums in
-// memory, a store per step).
-using Pair = double __attribute__((vector_size(16)));
+// non-constraint cells, m 1 at the constraints. Arithmetic only, four cells at
+// a time in Quad accumulators, their lanes added in a fixed order (an omp
+// simd reduction kept its partial sums in memory, a store per step).
 struct PairRun {
   double sum = 0.0, count = 0.0;
 };
-PairRun pair_run(const double* __restrict z0, const double* __restrict m0, const double* __restrict z1,
-                 const double* __restrict m1, int n) {
+[[gnu::always_inline]] inline PairRun pair_run(const double* __restrict z0, const double* __restrict m0,
+                                               const double* __restrict z1, const double* __restrict m1, int n) {
   const auto load = [](const double* p) {
-    Pair v;
+    Quad v;
     std::memcpy(&v, p, sizeof v);
     return v;
   };
-  Pair sum{}, count{};
+  Quad sum{}, count{};
   int x = 0;
-  for (; x + 1 < n; x += 2) {
-    const Pair d = load(z1 + x) - load(z0 + x), m = load(m0 + x) * load(m1 + x);
+  for (; x + 3 < n; x += 4) {
+    const Quad d = load(z1 + x) - load(z0 + x), m = load(m0 + x) * load(m1 + x);
     sum += m * (d * d);
     count += m;
   }
-  PairRun r{sum[0] + sum[1], count[0] + count[1]};
-  if (x < n) {
+  PairRun r{(sum[0] + sum[1]) + (sum[2] + sum[3]), (count[0] + count[1]) + (count[2] + count[3])};
+  for (; x < n; ++x) {
     const double d = z1[x] - z0[x], m = m0[x] * m1[x];
     r.sum += m * (d * d);
     r.count += m;
@@ -450,6 +449,8 @@ PairRun pair_run(const double* __restrict z0, const double* __restrict m0, const
 
 // The pair sums of the blocks of block row bj into `out`, on a copy of its
 // rows and the 16 below as pair_run's z and m (buffers reused by the caller).
+// Cloned for AVX2 as add_octave is (the same bits).
+__attribute__((target_clones("avx2", "default")))
 void block_row_pairs(const RoughField& g, const Blocks& b, int bj,
                      std::vector<double>& z, std::vector<double>& m, std::vector<LagSums>& out) {
   constexpr int kReach = 16;  // the longest lag
