@@ -4,7 +4,7 @@
 
 namespace mcmd {
 
-int reflect_index(long long i, int len) {
+int reflect_out_of_range(long long i, int len) {
   if (len <= 1) return 0;
   const long long period = 2LL * (len - 1);
   long long m = i % period;
