@@ -1,21 +1,17 @@
-// The CLI's memory policy. Its global operator new is malloc, as the default
-// one, but a large block is marked for transparent huge pages (madvise
-// MADV_HUGEPAGE) before anything touches it. The solver's buffers (~120 bytes
-// per field cell) are then faulted in 2 MiB at a time instead of 4 KiB: on the
-// benchmark machine a 4 KiB fault costs ~2.5 µs, and a 1201² fill took
-// ~47 000 of them (120 ms of system time). Where the kernel's THP mode is
-// "never", or the block is already touched (malloc reusing freed memory), the
-// advice changes nothing. Only the executable replaces operator new: the C
-// API library leaves its host's allocator alone. Measurements:
-// docs/default-method.md, session 10; tune_heap's, session 12.
-#include <malloc.h>
+// The CLI's global operator new: malloc, as the default one, but a large
+// block is marked for transparent huge pages (madvise MADV_HUGEPAGE) before
+// anything touches it. The solver's buffers (~120 bytes per field cell) are
+// then faulted in 2 MiB at a time instead of 4 KiB: on the benchmark machine
+// a 4 KiB fault costs ~2.5 µs, and a 1201² fill took ~47 000 of them (120 ms
+// of system time). Where the kernel's THP mode is "never", or the block is
+// already touched (malloc reusing freed memory), the advice changes nothing.
+// Only the executable replaces operator new: the C API library leaves its
+// host's allocator alone. Measurements: docs/default-method.md, session 10.
 #include <sys/mman.h>
 
 #include <cstdint>
 #include <cstdlib>
 #include <new>
-
-#include "huge_pages.hpp"
 
 namespace {
 
@@ -31,20 +27,6 @@ void advise_huge_pages(void* p, std::size_t n) {
 }
 
 }  // namespace
-
-namespace mcmd::cli {
-
-void tune_heap() {
-  // One heap for every thread: the fields solved on the worker threads reuse
-  // the pages the earlier ones freed, whichever thread freed them.
-  mallopt(M_ARENA_MAX, 1);
-  // Blocks up to 32 MiB from that heap, not from fresh mappings that each
-  // fault in again; and freed memory stays in it (peak memory is unchanged).
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-}
-
-}  // namespace mcmd::cli
 
 void* operator new(std::size_t n) {
   if (n == 0) n = 1;

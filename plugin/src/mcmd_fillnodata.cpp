@@ -7,7 +7,6 @@
 #include "cli_errors.hpp"
 #include "cli_help.hpp"
 #include "cli_run.hpp"
-#include "huge_pages.hpp"
 #include "cpl_conv.h"
 #include "gdal.h"
 
@@ -43,7 +42,6 @@ int fail(const std::string& msg) {
 constexpr GIntBig kDefaultCacheBytes = GIntBig{64} << 20;
 
 int main(int argc, char** argv) {
-  mcmd::cli::tune_heap();
   std::signal(SIGXFSZ, SIG_IGN);  // a file size limit becomes a write error, not a kill
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
