@@ -108,12 +108,12 @@ Rect target_bounds(const RoughField& g) {
   return b;
 }
 
-// The target cells of an area.
-std::vector<std::uint8_t> target_mask(const RoughField& g, const Area& a) {
-  std::vector<std::uint8_t> t(a.cells());
-  for (int y = a.y0; y < a.y0 + a.h; ++y)
-    for (int x = a.x0; x < a.x0 + a.w; ++x) t[a.index(x, y)] = is_target(g, g.index(x, y));
-  return t;
+// The target cells of an area, all inside rectangle `t` of it.
+std::vector<std::uint8_t> target_mask(const RoughField& g, const Area& a, const Rect& t) {
+  std::vector<std::uint8_t> mask(a.cells());
+  for (int y = t.y0; y < t.y1; ++y)
+    for (int x = t.x0; x < t.x1; ++x) mask[a.index(x, y)] = is_target(g, g.index(x, y));
+  return mask;
 }
 
 // The block lattice of a field, no block active.
@@ -573,6 +573,7 @@ std::vector<NoiseMoments> noise_moments(const RoughField& g, const Area& a, cons
       for (int y = std::max(1, b.y0(bj)); y < std::min(b.y1(bj, g.h), g.h - 1); ++y) {
         const double* v = noise.data() + a.index(x0, y);
         const std::uint8_t* t = target.data() + a.index(x0, y);
+        if (!std::memchr(t, 1, static_cast<std::size_t>(std::max(0, n_x)))) continue;  // adds 0: a small void's rows
         double n = 0, q = 0, qq = 0, cv = 0;
 #pragma omp simd reduction(+ : n, q, qq, cv)
         for (int k = 0; k < n_x; ++k) {
@@ -679,10 +680,10 @@ std::vector<double> block_scales(const Blocks& blocks, const LagTable& lags, con
 }
 
 // noise (over area `a`) × the block scales interpolated bilinearly between
-// block centres (a smooth amplitude field), in place; the noise lies in
-// active blocks only.
-void scale_noise(const RoughField& grid, const Area& a, const Blocks& blocks, const std::vector<double>& scales,
-                 std::vector<double>& noise, int threads) {
+// block centres (a smooth amplitude field), in place; the noise lies at the
+// `mask` cells, in active blocks only.
+void scale_noise(const RoughField& grid, const Area& a, const Blocks& blocks, const std::vector<std::uint8_t>& mask,
+                 const std::vector<double>& scales, std::vector<double>& noise, int threads) {
   const auto at = [&](int bi, int bj) {
     return scales[blocks.index(std::clamp(bi, 0, blocks.nx - 1), std::clamp(bj, 0, blocks.ny - 1))];
   };
@@ -690,15 +691,17 @@ void scale_noise(const RoughField& grid, const Area& a, const Blocks& blocks, co
   for (int bj = 0; bj < blocks.ny; ++bj)
     for (int bi = 0; bi < blocks.nx; ++bi) {
       if (!blocks.active[blocks.index(bi, bj)]) continue;
-      for (int y = blocks.y0(bj); y < blocks.y1(bj, grid.h); ++y) {
+      const Rect r =
+          mask_bounds(a, mask, Rect{blocks.x0(bi), blocks.x1(bi, grid.w), blocks.y0(bj), blocks.y1(bj, grid.h)});
+      for (int y = r.y0; y < r.y1; ++y) {
         const double fy = (y + blocks.oy + 0.5) / kBlock - 0.5;
-        const int cj = static_cast<int>(std::floor(fy));
+        const int cj = static_cast<int>(floor_of(fy));
         const double ty = fy - cj;
-        for (int x = blocks.x0(bi); x < blocks.x1(bi, grid.w); ++x) {
+        for (int x = r.x0; x < r.x1; ++x) {
           double& v = noise[a.index(x, y)];
           if (v == 0.0) continue;
           const double fx = (x + blocks.ox + 0.5) / kBlock - 0.5;
-          const int ci = static_cast<int>(std::floor(fx));
+          const int ci = static_cast<int>(floor_of(fx));
           const double tx = fx - ci;
           v *= (1 - ty) * ((1 - tx) * at(ci, cj) + tx * at(ci + 1, cj)) +
                ty * ((1 - tx) * at(ci, cj + 1) + tx * at(ci + 1, cj + 1));
@@ -707,11 +710,10 @@ void scale_noise(const RoughField& grid, const Area& a, const Blocks& blocks, co
     }
 }
 
-// The area the noise of a field covers: its target cells grown by
-// kNoiseReach, widened to whole blocks and one cell more (the Laplacian at
+// The area the noise of a field covers: its target cells (bounds `t`) grown
+// by kNoiseReach, widened to whole blocks and one cell more (the Laplacian at
 // a block's edge), inside the field. Empty without target cells.
-Area noise_area(const RoughField& g, const Blocks& b) {
-  const Rect t = target_bounds(g);
+Area noise_area(const RoughField& g, const Blocks& b, const Rect& t) {
   if (t.x1 <= t.x0) return Area{};
   const auto block_of = [](int v, int offset) { return (v + offset) / kBlock; };
   const int x0 = b.x0(block_of(std::max(0, t.x0 - kNoiseReach), b.ox));
@@ -724,6 +726,21 @@ Area noise_area(const RoughField& g, const Blocks& b) {
   a.w = std::min(g.w, x1 + 1) - a.x0;
   a.h = std::min(g.h, y1 + 1) - a.y0;
   return a;
+}
+
+// d (over area `a`) cut down to the box of its `mask` cells, outside which
+// it is 0: a small void's area is whole 32² blocks, its noise a few cells.
+Displacement crop_to_mask(const Area& a, const std::vector<std::uint8_t>& mask, Displacement d) {
+  const Rect r = mask_bounds(a, mask, Rect{a.x0, a.x0 + a.w, a.y0, a.y0 + a.h});
+  if (r.x1 <= r.x0) return {};
+  if (r.x1 - r.x0 == a.w && r.y1 - r.y0 == a.h) return d;
+  Displacement out{r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0, {}};
+  out.values.reserve(static_cast<std::size_t>(out.w) * out.h);
+  for (int y = r.y0; y < r.y1; ++y) {
+    const auto from = d.values.begin() + static_cast<std::ptrdiff_t>(a.index(r.x0, y));
+    out.values.insert(out.values.end(), from, from + out.w);
+  }
+  return out;
 }
 
 }  // namespace
@@ -752,10 +769,11 @@ Displacement roughness_displacement(const RoughField& grid, const FillParams& pa
     if (!global.valid) return {};
     H = global.H;
   }
-  const Area area = noise_area(grid, blocks);
+  const Rect targets = target_bounds(grid);
+  const Area area = noise_area(grid, blocks, targets);
   if (area.cells() == 0) return {};
   // Unconditioned noise at the noise cells only (0 elsewhere).
-  const std::vector<std::uint8_t> target = target_mask(grid, area);
+  const std::vector<std::uint8_t> target = target_mask(grid, area, targets);
   const std::vector<std::uint8_t> mask = noise_cells(target, area);
   mark_active(grid, area, mask, blocks);
   Displacement d{area.x0, area.y0, area.w, area.h, std::vector<double>(area.cells(), 0.0)};
@@ -767,7 +785,7 @@ Displacement roughness_displacement(const RoughField& grid, const FillParams& pa
                                               : known_range({grid.z, grid.cells()}, {grid.state, grid.cells()});
     const double scale = params.rs * unit * std::exp2(-(kOctaves - 1) * H);
     for (double& v : noise) v *= scale;
-    return d;
+    return crop_to_mask(area, mask, std::move(d));
   }
   // Global calibration: the noise's second-difference variance is kStrength²
   // of the terrain's; local targets per block where there are pairs enough.
@@ -776,9 +794,9 @@ Displacement roughness_displacement(const RoughField& grid, const FillParams& pa
   for (const NoiseMoments& m : moments) all.add(m);
   const double c = all.n > 0 ? all.curvature / (2.0 * all.n) : 0.0;
   const double global_scale = c > 0 ? kStrength * std::sqrt(global.curvature / c) : 0.0;
-  scale_noise(grid, area, blocks, block_scales(blocks, LagTable(pairs, blocks), moments, global, global_scale), noise,
-              threads);
-  return d;
+  scale_noise(grid, area, blocks, mask, block_scales(blocks, LagTable(pairs, blocks), moments, global, global_scale),
+              noise, threads);
+  return crop_to_mask(area, mask, std::move(d));
 }
 
 }  // namespace mcmd

@@ -57,8 +57,8 @@ struct Displacement {
 // solve, F = S(z − d) + d (thin_plate_with_roughness): S being linear, that is
 // S(z) + (d − S(d)), the smooth fill plus the noise conditioned on the
 // constraints (0 there, growing smoothly into the voids). The noise lies at
-// the wanted void cells and the cells within 8 cells of one; d's box holds
-// them, widened to the 32² blocks of raster coordinates they touch.
+// the wanted void cells and the cells within 8 cells of one; d's box is
+// their bounding box.
 // rs_auto: H from estimate_roughness; the amplitude per block gives the noise
 // the 5-point Laplacian variance of the terrain around it over the block's
 // voids (and its neighbours') (directional semivariogram of the nearest
