@@ -72,8 +72,22 @@ std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h) {
   std::vector<double> z(longest + 1), in(longest);
   for (int y = 0; y < h; ++y) {  // rows
     double* row = sq.data() + y * W;
-    for (int x = 0; x < w; ++x) in[x] = row[x];
-    transform_1d(in.data(), row, w, v, z);
+    // A cell valid in its column (0) stays 0, and across a run of the others
+    // the nearest cell lies within the run and the 0 on each side of it (any
+    // farther one is farther than that 0): transform those stretches only, a
+    // small part of a void's field.
+    for (int x = 0; x < w;) {
+      if (row[x] == 0.0) {
+        ++x;
+        continue;
+      }
+      int end = x;
+      while (end < w && row[end] != 0.0) ++end;
+      const int from = x > 0 ? x - 1 : 0, to = end < w ? end + 1 : w;
+      for (int k = from; k < to; ++k) in[k - from] = row[k];
+      transform_1d(in.data(), row + from, to - from, v, z);
+      x = end;
+    }
   }
   for (double& s : sq) s = std::sqrt(s);
   return sq;
