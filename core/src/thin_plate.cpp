@@ -96,15 +96,20 @@ std::vector<Lattice> build_hierarchy(const FieldView& f, const Plane& ref) {
   finest.w = f.w;
   finest.h = f.h;
   const std::size_t cells = static_cast<std::size_t>(f.w) * f.h;
-  finest.z.assign(cells, 0.0);
-  finest.pinned.assign(cells, 0);
-  for (int y = 0; y < f.h; ++y)
-    for (int x = 0; x < f.w; ++x)
-      if (is_constraint(f.state_at(x, y))) {
-        const std::size_t i = finest.index(x, y);
-        finest.pinned[i] = 1;
-        finest.z[i] = f.z_at(x, y) - ref.at(x, y);
-      }
+  finest.z.resize(cells);
+  finest.pinned.resize(cells);
+  for (int y = 0; y < f.h; ++y) {  // a select per cell, not a branch: it vectorises
+    const CellState* state = f.state + f.index(0, y);
+    const double* z = f.z + f.index(0, y);
+    double* out = finest.z.data() + finest.index(0, y);
+    std::uint8_t* pinned = finest.pinned.data() + finest.index(0, y);
+    for (int x = 0; x < f.w; ++x) {
+      const bool constraint = is_constraint(state[x]);
+      const double value = z[x] - ref.at(x, y);
+      pinned[x] = constraint;
+      out[x] = constraint ? value : 0.0;
+    }
+  }
   finest.spans = free_spans(finest.pinned, finest.w, finest.h);
   std::vector<Lattice> levels;
   levels.push_back(std::move(finest));
