@@ -145,10 +145,18 @@ void mark_active(const RoughField& g, const Area& a, const std::vector<std::uint
 // to scalars elsewhere). The noise's splines are evaluated at four cells at
 // once by the very operations of the one-cell form (templates below, T =
 // double or Quad; no fused multiply-add in either clone): the same bits
-// either way, on any machine.
+// either way, on any x86-64 machine.
 using Quad = double __attribute__((vector_size(32)));
 using QuadBits = long long __attribute__((vector_size(32)));
 using QuadIndex = int __attribute__((vector_size(16)));  // node offsets: small
+
+// The hot loops' AVX2 clones, chosen at load time (GNU ifunc); elsewhere
+// (other architectures, other compilers) the one portable version.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define MCMD_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define MCMD_AVX2_CLONES
+#endif
 
 // std::floor for the node coordinates (|v| far below 2^51), without the call
 // to libm that std::floor is on baseline x86-64: 2 per cell and octave.
@@ -276,7 +284,7 @@ template <class SplineRow>
 // instruction where the baseline takes 2: the noise's time on White Mountains
 // blobs fell by 16 % (the nodes' loads stay one by one). `node` and `scratch`
 // are buffers reused by the caller.
-__attribute__((target_clones("avx2", "default")))
+MCMD_AVX2_CLONES
 void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cells, std::vector<double>& node,
                 std::vector<double>& scratch) {
   const double s = std::ldexp(1.0, j);
@@ -490,7 +498,7 @@ struct PairRun {
 // The pair sums of the blocks of block row bj into `out`, on a copy of its
 // rows and the 16 below as pair_run's z and m (buffers reused by the caller).
 // Cloned for AVX2 as add_octave is (the same bits).
-__attribute__((target_clones("avx2", "default")))
+MCMD_AVX2_CLONES
 void block_row_pairs(const RoughField& g, const Blocks& b, int bj,
                      std::vector<double>& z, std::vector<double>& m, std::vector<LagSums>& out) {
   constexpr int kReach = 16;  // the longest lag
