@@ -36,11 +36,18 @@ double smoothstep(double t) {
 // and of where noise is generated at all.
 constexpr int kBlock = 32;
 
+// Cells [x0, x1) × [y0, y1) of a field (empty: x1 <= x0 or y1 <= y0).
+struct Rect {
+  int x0, x1, y0, y1;
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+};
+
 struct Blocks {
   int nx = 0, ny = 0;    // blocks per row, per column
   int ox = 0, oy = 0;    // local x + ox = position in the block lattice (cells); likewise y
-  std::vector<std::uint8_t> active;  // noise is generated in these
+  std::vector<Rect> noise_box;  // per block, the box of its noise cells: noise is generated where not empty
   std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * nx + i; }
+  bool active(int i, int j) const { return !noise_box[index(i, j)].empty(); }
   bool inside(int i, int j) const { return i >= 0 && j >= 0 && i < nx && j < ny; }
   // Local cells [x0, x1) of block column i (rows likewise), clipped to the field.
   int x0(int i) const { return std::max(0, i * kBlock - ox); }
@@ -81,9 +88,6 @@ bool is_target(const RoughField& g, std::size_t i) { return !is_constraint(g.sta
 // The bounding box of the target cells (empty: x1 <= x0). With a wanted mask
 // (a void's own cells: a small part of its field), the mask's rows are
 // scanned 8 bytes at a time.
-struct Rect {
-  int x0, x1, y0, y1;
-};
 Rect target_bounds(const RoughField& g) {
   Rect b{g.w, 0, g.h, 0};
   for (int y = 0; y < g.h; ++y) {
@@ -123,21 +127,8 @@ Blocks block_lattice(const RoughField& g) {
   b.oy = positive_mod(g.y0, kBlock);
   b.nx = (g.w + kBlock - 1) / kBlock + 1;
   b.ny = (g.h + kBlock - 1) / kBlock + 1;
-  b.active.assign(static_cast<std::size_t>(b.nx) * b.ny, 0);
+  b.noise_box.assign(static_cast<std::size_t>(b.nx) * b.ny, Rect{0, 0, 0, 0});
   return b;
-}
-
-// Blocks holding a cell of `mask` (over area `a`) become active.
-void mark_active(const RoughField& g, const Area& a, const std::vector<std::uint8_t>& mask, Blocks& b) {
-  for (int bj = 0; bj < b.ny; ++bj)
-    for (int bi = 0; bi < b.nx; ++bi) {
-      const int x0 = std::max(b.x0(bi), a.x0), x1 = std::min(b.x1(bi, g.w), a.x0 + a.w);
-      const int y0 = std::max(b.y0(bj), a.y0), y1 = std::min(b.y1(bj, g.h), a.y0 + a.h);
-      unsigned any = 0;
-      for (int y = y0; y < y1 && !any; ++y)
-        for (int x = x0; x < x1; ++x) any |= mask[a.index(x, y)];
-      b.active[b.index(bi, bj)] = any != 0;
-    }
 }
 
 // Four doubles as one value (a GCC vector extension: one AVX2 register in
@@ -388,9 +379,20 @@ Rect mask_bounds(const Area& a, const std::vector<std::uint8_t>& mask, Rect r) {
   return b;
 }
 
+// Each block's box of `mask` cells (over area `a`): the blocks holding one
+// become active, and their noise is made and scaled over that box only.
+void set_noise_boxes(const RoughField& g, const Area& a, const std::vector<std::uint8_t>& mask, Blocks& b) {
+  for (int bj = 0; bj < b.ny; ++bj)
+    for (int bi = 0; bi < b.nx; ++bi) {
+      const Rect block{std::max(b.x0(bi), a.x0), std::min(b.x1(bi, g.w), a.x0 + a.w), std::max(b.y0(bj), a.y0),
+                       std::min(b.y1(bj, g.h), a.y0 + a.h)};
+      b.noise_box[b.index(bi, bj)] = block.empty() ? Rect{0, 0, 0, 0} : mask_bounds(a, mask, block);
+    }
+}
+
 // The noise, octave j weighted 2^(jH), added to `out` (over area `a`) at the
-// cells of `mask`, block by block (active blocks only, over the box of their
-// mask cells: the coarse octaves' nodes cover the box), block rows on
+// cells of `mask`, block by block (active blocks only, over their noise box:
+// the coarse octaves' nodes cover the box), block rows on
 // `threads` threads (a lone field's noise, e.g. 3 % kept cells: each cell is
 // written by one block, the same bits for any count).
 void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const std::vector<std::uint8_t>& mask,
@@ -399,9 +401,8 @@ void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const s
   for (int bj = 0; bj < blocks.ny; ++bj) {
     std::vector<double> node, scratch;
     for (int bi = 0; bi < blocks.nx; ++bi) {
-      if (!blocks.active[blocks.index(bi, bj)]) continue;
-      const Rect r = mask_bounds(a, mask, Rect{blocks.x0(bi), blocks.x1(bi, g.w), blocks.y0(bj), blocks.y1(bj, g.h)});
-      if (r.x1 <= r.x0 || r.y1 <= r.y0) continue;
+      if (!blocks.active(bi, bj)) continue;
+      const Rect& r = blocks.noise_box[blocks.index(bi, bj)];
       for (int j = 0; j < octaves; ++j)
         add_octave(seed, j, std::exp2(j * H),
                    OctaveCells{g.x0 + r.x0, g.x0 + r.x1, g.y0 + r.y0, g.y0 + r.y1, mask.data() + a.index(r.x0, r.y0),
@@ -615,7 +616,7 @@ std::vector<NoiseMoments> noise_moments(const RoughField& g, const Area& a, cons
 #pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
   for (int bj = 0; bj < b.ny; ++bj)
     for (int bi = 0; bi < b.nx; ++bi) {
-      if (!b.active[b.index(bi, bj)]) continue;
+      if (!b.active(bi, bj)) continue;
       const int x0 = std::max(1, b.x0(bi)), n_x = std::min(b.x1(bi, g.w), g.w - 1) - x0;
       NoiseMoments m;
       for (int y = std::max(1, b.y0(bj)); y < std::min(b.y1(bj, g.h), g.h - 1); ++y) {
@@ -728,19 +729,18 @@ std::vector<double> block_scales(const Blocks& blocks, const LagTable& lags, con
 }
 
 // noise (over area `a`) × the block scales interpolated bilinearly between
-// block centres (a smooth amplitude field), in place; the noise lies at the
-// `mask` cells, in active blocks only.
-void scale_noise(const RoughField& grid, const Area& a, const Blocks& blocks, const std::vector<std::uint8_t>& mask,
-                 const std::vector<double>& scales, std::vector<double>& noise, int threads) {
+// block centres (a smooth amplitude field), in place; the noise lies in the
+// active blocks' noise boxes only.
+void scale_noise(const Area& a, const Blocks& blocks, const std::vector<double>& scales, std::vector<double>& noise,
+                 int threads) {
   const auto at = [&](int bi, int bj) {
     return scales[blocks.index(std::clamp(bi, 0, blocks.nx - 1), std::clamp(bj, 0, blocks.ny - 1))];
   };
 #pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
   for (int bj = 0; bj < blocks.ny; ++bj)
     for (int bi = 0; bi < blocks.nx; ++bi) {
-      if (!blocks.active[blocks.index(bi, bj)]) continue;
-      const Rect r =
-          mask_bounds(a, mask, Rect{blocks.x0(bi), blocks.x1(bi, grid.w), blocks.y0(bj), blocks.y1(bj, grid.h)});
+      if (!blocks.active(bi, bj)) continue;
+      const Rect& r = blocks.noise_box[blocks.index(bi, bj)];
       for (int y = r.y0; y < r.y1; ++y) {
         const double fy = (y + blocks.oy + 0.5) / kBlock - 0.5;
         const int cj = static_cast<int>(floor_of(fy));
@@ -823,7 +823,7 @@ Displacement roughness_displacement(const RoughField& grid, const FillParams& pa
   // Unconditioned noise at the noise cells only (0 elsewhere).
   const std::vector<std::uint8_t> target = target_mask(grid, area, targets);
   const std::vector<std::uint8_t> mask = noise_cells(target, area);
-  mark_active(grid, area, mask, blocks);
+  set_noise_boxes(grid, area, mask, blocks);
   Displacement d{area.x0, area.y0, area.w, area.h, std::vector<double>(area.cells(), 0.0)};
   std::vector<double>& noise = d.values;
   add_noise(grid, area, blocks, mask, params.seed, H, params.rs_auto ? auto_octaves(grid.depth) : kOctaves, noise,
@@ -842,8 +842,8 @@ Displacement roughness_displacement(const RoughField& grid, const FillParams& pa
   for (const NoiseMoments& m : moments) all.add(m);
   const double c = all.n > 0 ? all.curvature / (2.0 * all.n) : 0.0;
   const double global_scale = c > 0 ? kStrength * std::sqrt(global.curvature / c) : 0.0;
-  scale_noise(grid, area, blocks, mask, block_scales(blocks, LagTable(pairs, blocks), moments, global, global_scale),
-              noise, threads);
+  scale_noise(area, blocks, block_scales(blocks, LagTable(pairs, blocks), moments, global, global_scale), noise,
+              threads);
   return crop_to_mask(area, mask, std::move(d));
 }
 
