@@ -776,11 +776,15 @@ Area noise_area(const RoughField& g, const Blocks& b, const Rect& t) {
   return a;
 }
 
-// d (over area `a`) cut down to the box of its `mask` cells, outside which
-// it is 0: a small void's area is whole 32² blocks, its noise a few cells.
-Displacement crop_to_mask(const Area& a, const std::vector<std::uint8_t>& mask, Displacement d) {
-  const Rect r = mask_bounds(a, mask, Rect{a.x0, a.x0 + a.w, a.y0, a.y0 + a.h});
-  if (r.x1 <= r.x0) return {};
+// d (over area `a`) cut down to the union of the blocks' noise boxes,
+// outside which it is 0: a small void's area is whole 32² blocks, its noise
+// a few cells.
+Displacement crop_to_noise(const Area& a, const Blocks& b, Displacement d) {
+  Rect r{a.x0 + a.w, a.x0, a.y0 + a.h, a.y0};
+  for (const Rect& box : b.noise_box)
+    if (!box.empty())
+      r = Rect{std::min(r.x0, box.x0), std::max(r.x1, box.x1), std::min(r.y0, box.y0), std::max(r.y1, box.y1)};
+  if (r.empty()) return {};
   if (r.x1 - r.x0 == a.w && r.y1 - r.y0 == a.h) return d;
   Displacement out{r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0, {}};
   out.values.reserve(static_cast<std::size_t>(out.w) * out.h);
@@ -833,7 +837,7 @@ Displacement roughness_displacement(const RoughField& grid, const FillParams& pa
                                               : known_range({grid.z, grid.cells()}, {grid.state, grid.cells()});
     const double scale = params.rs * unit * std::exp2(-(kOctaves - 1) * H);
     for (double& v : noise) v *= scale;
-    return crop_to_mask(area, mask, std::move(d));
+    return crop_to_noise(area, blocks, std::move(d));
   }
   // Global calibration: the noise's second-difference variance is kStrength²
   // of the terrain's; local targets per block where there are pairs enough.
@@ -844,7 +848,7 @@ Displacement roughness_displacement(const RoughField& grid, const FillParams& pa
   const double global_scale = c > 0 ? kStrength * std::sqrt(global.curvature / c) : 0.0;
   scale_noise(area, blocks, block_scales(blocks, LagTable(pairs, blocks), moments, global, global_scale), noise,
               threads);
-  return crop_to_mask(area, mask, std::move(d));
+  return crop_to_noise(area, blocks, std::move(d));
 }
 
 }  // namespace mcmd
