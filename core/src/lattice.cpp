@@ -1,5 +1,7 @@
 #include "mcmd/lattice.hpp"
 
+#include <cstring>
+
 namespace mcmd {
 
 std::size_t Lattice::free_count() const {
@@ -25,12 +27,15 @@ std::vector<Span> free_spans(const std::vector<std::uint8_t>& pinned, int w, int
   std::vector<Span> out;
   for (int y = 0; y < h; ++y) {
     const std::uint8_t* row = pinned.data() + static_cast<std::size_t>(y) * w;
-    int x = 0;
-    while (x < w) {
-      while (x < w && row[x]) ++x;
-      const int x0 = x;
-      while (x < w && !row[x]) ++x;
-      if (x > x0) out.push_back({y, x0, x});
+    const std::uint8_t* end = row + w;
+    const std::uint8_t* p = row;
+    // Lattices are mostly pinned: memchr skips to the next free cell.
+    while ((p = static_cast<const std::uint8_t*>(std::memchr(p, 0, static_cast<std::size_t>(end - p))))) {
+      const std::uint8_t* q = p;
+      while (q < end && !*q) ++q;
+      out.push_back({y, static_cast<int>(p - row), static_cast<int>(q - row)});
+      if (q == end) break;
+      p = q;
     }
   }
   return out;
@@ -58,20 +63,30 @@ Lattice coarser_lattice(const Lattice& fine, CoarsePin rule) {
   const std::size_t cells = static_cast<std::size_t>(c.w) * c.h;
   c.z.assign(cells, 0.0);
   c.pinned.assign(cells, 0);
-  for (int j = 0; j < c.h; ++j)
-    for (int i = 0; i < c.w; ++i) {
-      const int fx = 2 * i, fy = 2 * j;
-      const bool inside = fx < fine.w && fy < fine.h;
-      bool pin = false;
-      if (rule == CoarsePin::position)
-        pin = inside && fine.pinned[fine.index(fx, fy)] != 0;
-      else
-        pin = any_pinned_around(fine, fx, fy);
-      if (!pin) continue;
-      c.pinned[c.index(i, j)] = 1;
-      // A ghost cell pinned by its neighbourhood holds a correction of 0.
-      if (inside) c.z[c.index(i, j)] = fine.z[fine.index(fx, fy)];
+  if (rule == CoarsePin::position) {
+    // Cell (i, j) is fine cell (2i, 2j); ghost cells past the fine lattice stay free.
+    const int inside_w = (fine.w + 1) / 2, inside_h = (fine.h + 1) / 2;
+    for (int j = 0; j < inside_h; ++j) {
+      const std::uint8_t* fine_pin = fine.pinned.data() + fine.index(0, 2 * j);
+      const double* fine_z = fine.z.data() + fine.index(0, 2 * j);
+      std::uint8_t* pin = c.pinned.data() + c.index(0, j);
+      double* z = c.z.data() + c.index(0, j);
+      for (int i = 0; i < inside_w; ++i) {  // a select per cell: it vectorises
+        const bool pinned = fine_pin[2 * i] != 0;
+        pin[i] = pinned;
+        z[i] = pinned ? fine_z[2 * i] : 0.0;
+      }
     }
+  } else {
+    for (int j = 0; j < c.h; ++j)
+      for (int i = 0; i < c.w; ++i) {
+        const int fx = 2 * i, fy = 2 * j;
+        if (!any_pinned_around(fine, fx, fy)) continue;
+        c.pinned[c.index(i, j)] = 1;
+        // A ghost cell pinned by its neighbourhood holds a correction of 0.
+        if (fx < fine.w && fy < fine.h) c.z[c.index(i, j)] = fine.z[fine.index(fx, fy)];
+      }
+  }
   c.spans = free_spans(c.pinned, c.w, c.h);
   return c;
 }

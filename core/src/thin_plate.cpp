@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "mcmd/biharmonic_relax.hpp"
@@ -62,22 +63,38 @@ struct Plane {
 };
 
 Plane constraint_plane(const FieldView& f) {
-  double n = 0, sx = 0, sy = 0, sz = 0;
-  for (int y = 0; y < f.h; ++y)
-    for (int x = 0; x < f.w; ++x)
-      if (is_constraint(f.state_at(x, y))) {
-        n += 1; sx += x; sy += y; sz += f.z_at(x, y);
-      }
+  // Counts and coordinate sums are integers (exact in any order); the sums of
+  // elevations run in raster order. Non-constraint cells add +0.0, which
+  // changes no sum (none can be -0.0): a select, not a branch, per cell.
+  std::int64_t n = 0, sx = 0, sy = 0;
+  double sz = 0;
+  for (int y = 0; y < f.h; ++y) {
+    const CellState* state = f.state + f.index(0, y);
+    const double* z = f.z + f.index(0, y);
+    std::int64_t row_n = 0, row_sx = 0;
+    for (int x = 0; x < f.w; ++x) {
+      const bool c = is_constraint(state[x]);
+      row_n += c;
+      row_sx += c ? x : 0;
+      sz += c ? z[x] : 0.0;
+    }
+    n += row_n; sx += row_sx; sy += row_n * y;
+  }
   Plane p;
   if (n == 0) return p;
-  p.x0 = sx / n; p.y0 = sy / n; p.c = sz / n;
+  const double count = static_cast<double>(n);
+  p.x0 = static_cast<double>(sx) / count; p.y0 = static_cast<double>(sy) / count; p.c = sz / count;
   double xx = 0, xy = 0, yy = 0, xz = 0, yz = 0;
-  for (int y = 0; y < f.h; ++y)
-    for (int x = 0; x < f.w; ++x)
-      if (is_constraint(f.state_at(x, y))) {
-        const double dx = x - p.x0, dy = y - p.y0, dz = f.z_at(x, y) - p.c;
-        xx += dx * dx; xy += dx * dy; yy += dy * dy; xz += dx * dz; yz += dy * dz;
-      }
+  for (int y = 0; y < f.h; ++y) {
+    const CellState* state = f.state + f.index(0, y);
+    const double* z = f.z + f.index(0, y);
+    const double dy = y - p.y0;
+    for (int x = 0; x < f.w; ++x) {
+      const bool c = is_constraint(state[x]);
+      const double dx = c ? x - p.x0 : 0.0, dz = c ? z[x] - p.c : 0.0, ddy = c ? dy : 0.0;
+      xx += dx * dx; xy += dx * ddy; yy += ddy * ddy; xz += dx * dz; yz += ddy * dz;
+    }
+  }
   const double det = xx * yy - xy * xy;
   if (det > 1e-9 * (xx * yy + 1e-300)) {
     p.cx = (yy * xz - xy * yz) / det;
