@@ -7,7 +7,7 @@ namespace mcmd {
 
 namespace {
 
-static constexpr double kTap[3] = {0.5, 1.0, 0.5};  // per axis: the transpose of linear interpolation
+constexpr double kTap[3] = {0.5, 1.0, 0.5};  // per axis: the transpose of linear interpolation
 
 // Coarse cell (i, j) from the fine cells around (2i, 2j) that lie inside the
 // fine level, given by accessors weight(index) and mean(index); taps of
@@ -36,7 +36,7 @@ void restrict_edge_cell(int i, int j, int fine_w, int fine_h, Weight weight, Mea
 // The same for the coarse cells [i0, i1) of row j whose nine taps all lie
 // inside, without a test per tap: a tap of weight 0 adds +0.0, which leaves
 // both sums as they were (neither can be -0.0), and the kernel sums to
-// exactly 4. Same bits as the edge path, in a loop the compiler vectorises.
+// exactly 4. Same bits as the edge path, without a branch per tap.
 template <class Weight, class Mean>
 void restrict_inner_run(int i0, int i1, int j, int fine_w, Weight weight, Mean mean, double* m, double* wt) {
   const std::size_t row = static_cast<std::size_t>(2 * j) * fine_w;
