@@ -1,6 +1,6 @@
 #include "mcmd/lattice.hpp"
 
-#include <cstring>
+#include "zero_runs.hpp"
 
 namespace mcmd {
 
@@ -27,16 +27,7 @@ std::vector<Span> free_spans(const std::vector<std::uint8_t>& pinned, int w, int
   std::vector<Span> out;
   for (int y = 0; y < h; ++y) {
     const std::uint8_t* row = pinned.data() + static_cast<std::size_t>(y) * w;
-    const std::uint8_t* end = row + w;
-    const std::uint8_t* p = row;
-    // Lattices are mostly pinned: memchr skips to the next free cell.
-    while ((p = static_cast<const std::uint8_t*>(std::memchr(p, 0, static_cast<std::size_t>(end - p))))) {
-      const std::uint8_t* q = p;
-      while (q < end && !*q) ++q;
-      out.push_back({y, static_cast<int>(p - row), static_cast<int>(q - row)});
-      if (q == end) break;
-      p = q;
-    }
+    detail::for_each_zero_run(row, w, [&](int x0, int x1) { out.push_back({y, x0, x1}); });
   }
   return out;
 }

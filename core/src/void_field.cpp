@@ -3,25 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 
 #include "mcmd/distance.hpp"
 #include "mcmd/thin_plate_schedule.hpp"
+#include "zero_runs.hpp"
 
 namespace mcmd::detail {
 
 int longest_void_run(const std::uint8_t* valid, int w, int h) {
   int longest = 0;
   for (int y = 0; y < h; ++y) {
-    const std::uint8_t* p = valid + static_cast<std::size_t>(y) * w;
-    const std::uint8_t* const end = p + w;
-    // memchr skips the valid stretches (most of a field) a vector at a time.
-    while ((p = static_cast<const std::uint8_t*>(std::memchr(p, 0, static_cast<std::size_t>(end - p))))) {
-      const std::uint8_t* q = p;
-      while (q < end && !*q) ++q;
-      longest = std::max(longest, static_cast<int>(q - p));
-      p = q;
-    }
+    for_each_zero_run(valid + static_cast<std::size_t>(y) * w, w,
+                      [&](int x0, int x1) { longest = std::max(longest, x1 - x0); });
   }
   return longest;
 }
