@@ -1,21 +1,24 @@
 #include "background_copy.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <utility>
 
+#include "blank_source.hpp"
 #include "cli_errors.hpp"
 #include "errors.hpp"
 
 namespace mcmd::cli {
 
 BackgroundCopy::BackgroundCopy(GDALDriver* driver, std::string source_path, std::string path, CPLStringList co,
-                               std::string shown, std::function<bool()> keep_going)
+                               std::string shown, std::function<bool()> keep_going, bool blank)
     : driver_(driver),
       source_path_(std::move(source_path)),
       path_(std::move(path)),
       shown_(std::move(shown)),
       co_(std::move(co)),
       keep_going_(std::move(keep_going)),
+      blank_(blank),
       thread_(&BackgroundCopy::run, this) {}
 
 BackgroundCopy::~BackgroundCopy() {
@@ -41,7 +44,8 @@ void BackgroundCopy::run() {
   try {
     DatasetPtr src(GDALDataset::Open(source_path_.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
     if (!src) throw gdal::Failure(CPLE_FileIO, "cannot write '" + shown_ + "': cannot reopen the source");
-    DatasetPtr out = create_copy(driver_, path_, *src, co_.List(), log, progress, this, shown_);
+    const std::unique_ptr<GDALDataset> view = blank_ ? gdal::blank_source(*src) : nullptr;
+    DatasetPtr out = create_copy(driver_, path_, view ? *view : *src, co_.List(), log, progress, this, shown_);
     out = reopen_for_update(std::move(out), path_, shown_);
     if (log.failures() != 0) throw gdal::Failure(CPLE_FileIO, "cannot write '" + shown_ + "': " + log.first_failure());
     copy_band_info(*src, *out);

@@ -5,6 +5,9 @@
 // writing the georeferencing looks the CRS up in PROJ's database, which the
 // helper's PROJ context (one per thread) has open and cached from the copy;
 // on the main thread that was ~7 ms more at the end of a 1027×875 fill.
+// A single-band source is copied blank (blank_source.hpp): the fill, which
+// holds all its cells, writes every cell of the copy, and the source is
+// decoded once.
 #pragma once
 
 #include <atomic>
@@ -26,11 +29,16 @@ class BackgroundCopy {
   // Starts copying `source_path` (opened again, read-only: GDAL datasets are
   // not shared between threads) to `path` with `driver` and `co`.
   // `keep_going` is polled by the copy's progress (from the helper thread).
+  // With `blank` (a single-band source), the copy's band is left for the fill
+  // to write whole (FillRequest::blank_target).
   BackgroundCopy(GDALDriver* driver, std::string source_path, std::string path, CPLStringList co,
-                 std::string shown, std::function<bool()> keep_going);
+                 std::string shown, std::function<bool()> keep_going, bool blank);
   BackgroundCopy(const BackgroundCopy&) = delete;
   BackgroundCopy& operator=(const BackgroundCopy&) = delete;
   ~BackgroundCopy();  // an unfinished copy is stopped; either way the thread is joined
+
+  // Whether the copy's band is blank: the fill must write every cell.
+  bool blank() const { return blank_; }
 
   // Waits for the copy and returns it, open for update, its band info
   // (copy_band_info) set. Rethrows what the copy threw (create_copy's
@@ -50,6 +58,7 @@ class BackgroundCopy {
   std::string source_path_, path_, shown_;
   CPLStringList co_;
   std::function<bool()> keep_going_;
+  bool blank_;
   std::atomic<bool> stop_{false};
   std::mutex mutex_;
   std::condition_variable changed_;

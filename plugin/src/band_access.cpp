@@ -9,15 +9,25 @@
 
 namespace mcmd::gdal {
 
+namespace {
+
+std::size_t cell_count(GDALRasterBand& band) {
+  return static_cast<std::size_t>(band.GetXSize()) * static_cast<std::size_t>(band.GetYSize());
+}
+
+[[noreturn]] void fail_io(const char* what) {
+  const std::string detail = CPLGetLastErrorMsg();
+  throw Failure(CPLE_FileIO, what + (detail.empty() ? "" : ": " + detail));
+}
+
+}  // namespace
+
 BandAccess::BandAccess(GDALRasterBand& source, GDALRasterBand& target, const FillRequest& request)
     : BandAccess(source, [&target]() -> GDALRasterBand& { return target; }, request) {
   target_ = &target;
   target_type_ = pixel_type_of(target);
   in_place_ = &source == &target;
-  if (in_place_) {
-    const std::size_t cells = static_cast<std::size_t>(source.GetXSize()) * static_cast<std::size_t>(source.GetYSize());
-    written_.assign((cells + 63) / 64, 0);
-  }
+  if (in_place_) written_.assign((cell_count(source) + 63) / 64, 0);
 }
 
 BandAccess::BandAccess(GDALRasterBand& source, TargetBand target, const FillRequest& request)
@@ -27,6 +37,7 @@ BandAccess::BandAccess(GDALRasterBand& source, TargetBand target, const FillRequ
       source_type_(pixel_type_of(source)),
       in_place_(false) {
   for (GDALRasterBand* mask : request.masks) check_mask_size(*mask, source);
+  if (request.blank_target) written_.assign((cell_count(source) + 63) / 64, 0);
 }
 
 GDALRasterBand& BandAccess::target() {
@@ -53,7 +64,9 @@ RasterAccess BandAccess::access() {
 }
 
 void BandAccess::read(int x0, int y0, int w, int h, double* z, std::uint8_t* valid) {
-  read_cells(source_, source_type_, request_.masks, Window{x0, y0, w, h}, request_.use_nodata, z, valid, nullptr);
+  NativeCells* keep = request_.blank_target && whole(x0, y0, w, h) ? &kept_ : nullptr;
+  read_cells(source_, source_type_, request_.masks, Window{x0, y0, w, h}, request_.use_nodata, z, valid, nullptr,
+             keep);
   if (!in_place_) return;
   const std::size_t W = static_cast<std::size_t>(source_.GetXSize());
   for (int r = 0; r < h; ++r)
@@ -64,6 +77,10 @@ void BandAccess::read(int x0, int y0, int w, int h, double* z, std::uint8_t* val
 
 void BandAccess::write(int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
   GDALRasterBand& out = target();
+  if (request_.blank_target && kept_.type == target_type_.gdt && whole(x0, y0, w, h)) {
+    write_over_kept(z, mask);
+    return;
+  }
   const int bytes = GDALGetDataTypeSizeBytes(target_type_.gdt);
   run_.resize(static_cast<std::size_t>(w) * bytes);
   const std::size_t W = static_cast<std::size_t>(out.GetXSize());
@@ -78,18 +95,76 @@ void BandAccess::write(int x0, int y0, int w, int h, const double* z, const std:
       while (end < w && mask[base + end]) ++end;
       encode(target_type_, z + base + c, static_cast<std::size_t>(end - c), run_.data());
       if (out.RasterIO(GF_Write, x0 + c, y0 + r, end - c, 1, run_.data(), end - c, 1, target_type_.gdt, 0, 0,
-                           nullptr) != CE_None) {
-        const std::string detail = CPLGetLastErrorMsg();
-        throw Failure(CPLE_FileIO, "cannot write the filled cells" + (detail.empty() ? "" : ": " + detail));
-      }
-      if (in_place_)
-        for (int k = c; k < end; ++k) {
-          const std::size_t cell = (static_cast<std::size_t>(y0) + r) * W + static_cast<std::size_t>(x0) + k;
-          written_[cell >> 6] |= std::uint64_t{1} << (cell & 63);
-        }
+                           nullptr) != CE_None)
+        fail_io("cannot write the filled cells");
+      if (!written_.empty())
+        for (int k = c; k < end; ++k)
+          mark_written((static_cast<std::size_t>(y0) + r) * W + static_cast<std::size_t>(x0) + k);
       c = end;
     }
   }
+}
+
+// The whole band in one request: the filled cells encoded over the source's
+// cells as read (kept_, which this uses up), known and unfilled cells as they were.
+void BandAccess::write_over_kept(const double* z, const std::uint8_t* mask) {
+  const int W = source_.GetXSize(), H = source_.GetYSize();
+  const std::size_t n = cell_count(source_);
+  const int bytes = GDALGetDataTypeSizeBytes(target_type_.gdt);
+  auto* cells = static_cast<unsigned char*>(kept_.data.get());
+  for (std::size_t c = 0; c < n;) {
+    if (!mask[c]) {
+      ++c;
+      continue;
+    }
+    std::size_t end = c;
+    while (end < n && mask[end]) ++end;
+    encode(target_type_, z + c, end - c, cells + c * bytes);
+    c = end;
+  }
+  if (target().RasterIO(GF_Write, 0, 0, W, H, cells, W, H, target_type_.gdt, 0, 0, nullptr) != CE_None)
+    fail_io("cannot write the filled cells");
+  std::fill(written_.begin(), written_.end(), ~std::uint64_t{0});
+  kept_ = NativeCells{};
+}
+
+void BandAccess::complete() {
+  if (!request_.blank_target) return;
+  const int W = source_.GetXSize(), H = source_.GetYSize();
+  const int rows = std::clamp((1 << 20) / std::max(W, 1), 1, std::max(H, 1));  // ~a million cells a request
+  for (int y = 0; y < H; y += rows) complete_rows(y, std::min(rows, H - y));
+  kept_ = NativeCells{};
+}
+
+// Rows [y0, y0 + rows): the cells not written, copied from the source (kept_
+// or read again) into the target, in the band's own type.
+void BandAccess::complete_rows(int y0, int rows) {
+  const int W = source_.GetXSize();
+  const std::size_t first = static_cast<std::size_t>(y0) * W, n = static_cast<std::size_t>(rows) * W;
+  std::size_t missing = 0;
+  for (std::size_t i = first; i < first + n; ++i) missing += !was_written(i);
+  if (missing == 0) return;
+  GDALRasterBand& out = target();
+  const GDALDataType gdt = target_type_.gdt;
+  const int bytes = GDALGetDataTypeSizeBytes(gdt);
+  std::vector<unsigned char> from(n * bytes);
+  if (kept_.type == gdt)
+    std::copy_n(static_cast<const unsigned char*>(kept_.data.get()) + first * bytes, n * bytes, from.begin());
+  else if (source_.RasterIO(GF_Read, 0, y0, W, rows, from.data(), W, rows, gdt, 0, 0, nullptr) != CE_None)
+    fail_io("cannot read the band");
+  std::vector<unsigned char> to;
+  if (missing < n) {  // keep what the fill wrote
+    to.resize(n * bytes);
+    if (out.RasterIO(GF_Read, 0, y0, W, rows, to.data(), W, rows, gdt, 0, 0, nullptr) != CE_None)
+      fail_io("cannot read the output back");
+    for (std::size_t i = 0; i < n; ++i)
+      if (!was_written(first + i)) std::copy_n(from.begin() + i * bytes, bytes, to.begin() + i * bytes);
+  } else {
+    to.swap(from);
+  }
+  if (out.RasterIO(GF_Write, 0, y0, W, rows, to.data(), W, rows, gdt, 0, 0, nullptr) != CE_None)
+    fail_io("cannot write the known cells");
+  for (std::size_t i = first; i < first + n; ++i) mark_written(i);
 }
 
 }  // namespace mcmd::gdal

@@ -2,13 +2,17 @@
 // are read from `source` (its values, NaN, nodata and the request's masks) and
 // filled cells are written to `target`. When source and target are the same
 // band (in place), a bitset of written cells (1 bit per cell) keeps later
-// reads seeing those cells as void, as the tiled fill requires.
+// reads seeing those cells as void, as the tiled fill requires. A blank target
+// (request.blank_target) gets every cell: a whole-band write puts the filled
+// cells over the source's as read, and complete() copies whatever cell was
+// not written from the source.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <vector>
 
+#include "band_window.hpp"
 #include "fill_band.hpp"
 #include "gdal_priv.h"
 #include "mcmd/tiled_fill.hpp"
@@ -32,10 +36,21 @@ class BandAccess {
   // Whether the nodata value marks voids (besides NaN and masks).
   bool nodata_marks_voids() const;
 
+  // After a successful fill: a blank target's cells that the fill did not
+  // write are copied from the source, so that the target holds every cell.
+  // Throws Failure on I/O errors.
+  void complete();
+
  private:
   void read(int x0, int y0, int w, int h, double* z, std::uint8_t* valid);
   void write(int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask);
+  void write_over_kept(const double* z, const std::uint8_t* mask);
+  void complete_rows(int y0, int rows);
   bool was_written(std::size_t cell) const { return (written_[cell >> 6] >> (cell & 63)) & 1u; }
+  void mark_written(std::size_t cell) { written_[cell >> 6] |= std::uint64_t{1} << (cell & 63); }
+  bool whole(int x0, int y0, int w, int h) const {
+    return x0 == 0 && y0 == 0 && w == source_.GetXSize() && h == source_.GetYSize();
+  }
 
   GDALRasterBand& target();
 
@@ -46,7 +61,8 @@ class BandAccess {
   PixelType source_type_;
   PixelType target_type_;
   bool in_place_;
-  std::vector<std::uint64_t> written_;  // in place only
+  std::vector<std::uint64_t> written_;  // in place, or a blank target
+  NativeCells kept_;                    // a blank target's source cells, from a whole-band read
   std::vector<unsigned char> run_;
 };
 

@@ -48,15 +48,26 @@ bool integer_nodata(GDALRasterBand& band, const PixelType& type, T& out) {
   return band.GetMaskFlags() == GMF_NODATA && nodata_as<T>(type, out);
 }
 
+// Hands `raw` (values of `gdt`) over to *keep, when there is one.
+template <class T>
+void keep_native(std::vector<T>&& raw, GDALDataType gdt, NativeCells* keep) {
+  if (!keep) return;
+  auto owner = std::make_shared<std::vector<T>>(std::move(raw));
+  keep->data = std::shared_ptr<void>(owner, owner->data());
+  keep->type = gdt;
+}
+
 template <class T>
 bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win, GDALDataType gdt, bool own_mask,
-                  double* z, std::uint8_t* valid) {
-  const std::vector<T> raw = read_native<T>(band, win, gdt, z);
+                  double* z, std::uint8_t* valid, NativeCells* keep) {
+  std::vector<T> raw = read_native<T>(band, win, gdt, z);
   T nodata{};
-  if (!own_mask || !integer_nodata<T>(band, type, nodata)) return false;
-  for (std::size_t i = 0; i < raw.size(); ++i)
-    if (raw[i] == nodata) valid[i] = 0;
-  return true;
+  const bool masked = own_mask && integer_nodata<T>(band, type, nodata);
+  if (masked)
+    for (std::size_t i = 0; i < raw.size(); ++i)
+      if (raw[i] == nodata) valid[i] = 0;
+  keep_native(std::move(raw), gdt, keep);
+  return masked;
 }
 
 // A float band whose own mask is its nodata value: GDAL's nodata mask band
@@ -64,21 +75,7 @@ bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win
 // and NaN to a NaN nodata. The same test here spares the mask band's second
 // read of the window. GMF_NODATA implies the nodata is in the type's range.
 template <class T>
-bool read_float(GDALRasterBand& band, const PixelType& type, const Window& win, GDALDataType gdt, bool own_mask,
-                double* z, std::uint8_t* valid) {
-  std::vector<T> native;
-  const T* raw = nullptr;
-  if constexpr (std::is_same_v<T, double>) {  // straight into z: nothing to widen
-    check_io(band.RasterIO(GF_Read, win.x, win.y, win.w, win.h, z, win.w, win.h, gdt, 0, 0, nullptr),
-             "cannot read the band");
-    raw = z;
-  } else {
-    native = read_native<T>(band, win, gdt, z);
-    raw = native.data();
-  }
-  if (!own_mask || !type.has_nodata || band.GetMaskFlags() != GMF_NODATA) return false;
-  const T nodata = static_cast<T>(type.nodata);
-  const std::size_t n = win.cells();
+void mark_float_nodata(const T* raw, std::size_t n, T nodata, std::uint8_t* valid) {
   if (std::isnan(nodata)) {
     for (std::size_t i = 0; i < n; ++i)
       if (std::isnan(raw[i])) valid[i] = 0;
@@ -86,22 +83,42 @@ bool read_float(GDALRasterBand& band, const PixelType& type, const Window& win, 
     for (std::size_t i = 0; i < n; ++i)
       if (!std::isnan(raw[i]) && ARE_REAL_EQUAL(raw[i], nodata)) valid[i] = 0;
   }
-  return true;
+}
+
+template <class T>
+bool read_float(GDALRasterBand& band, const PixelType& type, const Window& win, GDALDataType gdt, bool own_mask,
+                double* z, std::uint8_t* valid, NativeCells* keep) {
+  const std::size_t n = win.cells();
+  std::vector<T> native;
+  const T* raw = nullptr;
+  if constexpr (std::is_same_v<T, double>) {  // straight into z: nothing to widen
+    check_io(band.RasterIO(GF_Read, win.x, win.y, win.w, win.h, z, win.w, win.h, gdt, 0, 0, nullptr),
+             "cannot read the band");
+    raw = z;
+    if (keep) native.assign(z, z + n);  // z is the fill's to change
+  } else {
+    native = read_native<T>(band, win, gdt, z);
+    raw = native.data();
+  }
+  const bool masked = own_mask && type.has_nodata && band.GetMaskFlags() == GMF_NODATA;
+  if (masked) mark_float_nodata(raw, n, static_cast<T>(type.nodata), valid);
+  keep_native(std::move(native), gdt, keep);
+  return masked;
 }
 
 // Reads the values into z; with `own_mask` (the band's own mask is one of
 // the masks asked for) returns true when it also marked that mask's voids
 // in `valid` (the caller then skips it).
 bool read_values(GDALRasterBand& band, const PixelType& type, const Window& win, bool own_mask, double* z,
-                 std::uint8_t* valid) {
+                 std::uint8_t* valid, NativeCells* keep) {
   switch (type.signed_byte ? GDT_Unknown : type.gdt) {
-    case GDT_Byte: return read_integer<std::uint8_t>(band, type, win, GDT_Byte, own_mask, z, valid);
-    case GDT_Int16: return read_integer<std::int16_t>(band, type, win, GDT_Int16, own_mask, z, valid);
-    case GDT_UInt16: return read_integer<std::uint16_t>(band, type, win, GDT_UInt16, own_mask, z, valid);
-    case GDT_Int32: return read_integer<std::int32_t>(band, type, win, GDT_Int32, own_mask, z, valid);
-    case GDT_UInt32: return read_integer<std::uint32_t>(band, type, win, GDT_UInt32, own_mask, z, valid);
-    case GDT_Float32: return read_float<float>(band, type, win, GDT_Float32, own_mask, z, valid);
-    case GDT_Float64: return read_float<double>(band, type, win, GDT_Float64, own_mask, z, valid);
+    case GDT_Byte: return read_integer<std::uint8_t>(band, type, win, GDT_Byte, own_mask, z, valid, keep);
+    case GDT_Int16: return read_integer<std::int16_t>(band, type, win, GDT_Int16, own_mask, z, valid, keep);
+    case GDT_UInt16: return read_integer<std::uint16_t>(band, type, win, GDT_UInt16, own_mask, z, valid, keep);
+    case GDT_Int32: return read_integer<std::int32_t>(band, type, win, GDT_Int32, own_mask, z, valid, keep);
+    case GDT_UInt32: return read_integer<std::uint32_t>(band, type, win, GDT_UInt32, own_mask, z, valid, keep);
+    case GDT_Float32: return read_float<float>(band, type, win, GDT_Float32, own_mask, z, valid, keep);
+    case GDT_Float64: return read_float<double>(band, type, win, GDT_Float64, own_mask, z, valid, keep);
     default: break;
   }
   if (!type.signed_byte) {
@@ -113,6 +130,7 @@ bool read_values(GDALRasterBand& band, const PixelType& type, const Window& win,
   check_io(band.RasterIO(GF_Read, win.x, win.y, win.w, win.h, raw.data(), win.w, win.h, GDT_Byte, 0, 0, nullptr),
            "cannot read the band");
   for (std::size_t i = 0; i < raw.size(); ++i) z[i] = raw[i];
+  keep_native(std::move(raw), GDT_Byte, keep);
   return false;
 }
 
@@ -126,11 +144,12 @@ void check_mask_size(GDALRasterBand& mask, GDALRasterBand& band) {
 }
 
 std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
-                       const Window& win, bool signed_nodata, double* z, std::uint8_t* valid, bool* marked) {
+                       const Window& win, bool signed_nodata, double* z, std::uint8_t* valid, bool* marked,
+                       NativeCells* keep) {
   const std::size_t n = win.cells();
   std::fill(valid, valid + n, std::uint8_t{1});
   const bool own_mask = std::find(masks.begin(), masks.end(), band.GetMaskBand()) != masks.end();
-  const bool own_nodata_done = read_values(band, type, win, own_mask, z, valid);
+  const bool own_nodata_done = read_values(band, type, win, own_mask, z, valid, keep);
   const bool nodata_voids = signed_nodata && type.signed_byte && type.has_nodata;
   for (std::size_t i = 0; i < n; ++i)
     if ((nodata_voids && z[i] == type.nodata) || !std::isfinite(z[i])) valid[i] = 0;

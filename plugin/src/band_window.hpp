@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "gdal_priv.h"
@@ -27,6 +28,13 @@ struct WindowData {
   std::size_t void_count = 0;
 };
 
+// A window's values as the band holds them, kept from a read when asked for
+// (a blank output copy is written from them: no second decode of the source).
+struct NativeCells {
+  std::shared_ptr<void> data;       // win.cells() values of `type`, row-major
+  GDALDataType type = GDT_Unknown;  // GDT_Unknown: none kept (a type GDAL reads as Float64)
+};
+
 // Read `win` of `band`. A cell is void when it is not finite (NaN, ±inf) or
 // any band of `masks` is 0 there. Callers leave out masks that mark nothing
 // (a band's own mask with GMF_ALL_VALID).
@@ -42,8 +50,10 @@ void check_mask_size(GDALRasterBand& mask, GDALRasterBand& band);
 
 // read_window into the caller's z and valid (win.cells() each); returns the
 // void count, and whether voids are marked at all in *marked (may be null).
+// With `keep`, the values as read in the band's own type are kept there.
 std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
-                       const Window& win, bool signed_nodata, double* z, std::uint8_t* valid, bool* marked);
+                       const Window& win, bool signed_nodata, double* z, std::uint8_t* valid, bool* marked,
+                       NativeCells* keep = nullptr);
 
 // Write z[i] for every cell with write[i] != 0, converted to the band's type;
 // no other cell is touched. Throws Failure on I/O errors.

@@ -117,7 +117,8 @@ void fill_bands(GDALDataset& source, BackgroundCopy* copy, const std::vector<int
     for (int b : bands) gdal::check_band(*source.GetRasterBand(b), request_for(source, b, file_mask, args));
   for (std::size_t i = 0; i < bands.size(); ++i) {
     const int b = bands[i];
-    const gdal::FillRequest req = request_for(source, b, file_mask, args);
+    gdal::FillRequest req = request_for(source, b, file_mask, args);
+    req.blank_target = copy && copy->blank();
     const double w = (slice.hi - slice.lo) / static_cast<double>(bands.size());
     const ProgressSlice part{slice.fn, slice.lo + w * i, slice.lo + w * (i + 1)};
     GDALRasterBand& band = *source.GetRasterBand(b);
@@ -207,8 +208,9 @@ void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
 // in place. An uncompressed GeoTIFF copy is read back by the fill (cheaper
 // than decoding a compressed source twice), and so is the work copy. A small
 // raster (read whole once, written at the end) is the exception: the fill
-// reads the source while the copy is made on a second thread (BackgroundCopy),
-// whose two decodes run side by side instead of one after the other.
+// reads the source while the copy is made on a second thread (BackgroundCopy).
+// A single-band source's copy is blank (its structure, no pixel: the source
+// is decoded once), and the fill writes every cell of it.
 void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   DatasetPtr src = open_raster(args.src, false, "raster");
   const std::vector<int> bands = select_bands(*src, args.bands);
@@ -218,7 +220,8 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   const CPLStringList co = creation_options(args, driver, log);
   TempOutput out(args.dst, driver);
   if (fill_output_directly(driver, co) && copy_in_background(*src)) {
-    BackgroundCopy dst(driver, args.src, out.path(), co, args.dst, [] { return g_interrupted == 0; });
+    BackgroundCopy dst(driver, args.src, out.path(), co, args.dst, [] { return g_interrupted == 0; },
+                       src->GetRasterCount() == 1);
     log.reset();
     fill_bands(*src, &dst, bands, mask, args, ProgressSlice{progress, 0.0, 1.0});
     dst.close();  // waits for a copy that had nothing to fill, flushes

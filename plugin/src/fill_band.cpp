@@ -76,6 +76,7 @@ void fill_band_access(BandAccess& band, const FillRequest& request, const Option
   }
   // Nothing was written when no cell is void.
   if (request.require_void_marker && !marked && stats.void_cells == 0) fail_unmarked(request);
+  band.complete();
   report(progress, 1.0);
 }
 

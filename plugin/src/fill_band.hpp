@@ -17,6 +17,7 @@ struct FillRequest {
   bool require_void_marker = false;    // fail when no mask and no NaN marks a void
   bool use_nodata = true;              // honour the band's nodata value (see read_window)
   int band_number = 0;                 // for messages; 0 = unnamed
+  bool blank_target = false;           // the target (a copy) holds no cell yet: write them all
 };
 
 // The band's own validity mask, or nullptr when it says every cell is valid.
@@ -27,11 +28,12 @@ GDALRasterBand* own_mask(GDALRasterBand& band);
 void check_band(GDALRasterBand& band, const FillRequest& request);
 
 // Fill the voids of `source` (its NaN cells, nodata and request.masks) into
-// `target`, a band of the same size holding the same known cells (the source
-// itself for in-place filling, or a copy). Only void cells of target are
-// written. Throws Failure (no valid cell, nothing marks voids, I/O),
-// Cancelled, OptionError, std::invalid_argument, std::bad_alloc.
-// A band with no void cell is left untouched.
+// `target`, a band of the same size and type holding the same known cells
+// (the source itself for in-place filling, or a copy). Only void cells of
+// target are written, and a band with no void cell is left untouched; a blank
+// target (request.blank_target: a copy of blank_source) gets every cell.
+// Throws Failure (no valid cell, nothing marks voids, I/O), Cancelled,
+// OptionError, std::invalid_argument, std::bad_alloc.
 void fill_band(GDALRasterBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
                const ProgressFn& progress);
 
