@@ -5,11 +5,13 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "band_window.hpp"
 #include "gdal_priv.h"
 #include "pixel_type.hpp"
+#include "test_support.hpp"
 
 namespace {
 
@@ -91,6 +93,46 @@ TEST(BandWindow, IntegerNodataVoidsMatchGdalsMaskBand) {
   expect_same_voids_as_gdal(GDT_UInt16, 0, {0, 1, 65535});
   expect_same_voids_as_gdal(GDT_Int32, -9999, {-9999, -9998, -10000, 7});
   expect_same_voids_as_gdal(GDT_Byte, 255, {255, 254, 0});
+}
+
+// A read-only band read whole is decoded block by block (read_raw): on a
+// tiled GeoTIFF whose edge tiles are partial, every cell and the kept native
+// cells must be those GDAL's RasterIO gives, for several types.
+TEST(BandWindow, WholeBandReadBlockByBlockMatchesRasterIO) {
+  GDALAllRegister();
+  mcmd::test::TempDir dir;
+  for (GDALDataType type : {GDT_Int16, GDT_Float32, GDT_Float64, GDT_Byte}) {
+    const std::string path = dir.file(std::string(GDALGetDataTypeName(type)) + ".tif");
+    mcmd::test::RasterSpec spec;  // 67×45: 5×3 tiles of 16², the last column and row partial
+    spec.type = type;
+    spec.nodata = type == GDT_Byte ? 0.0 : -9999.0;
+    spec.base = 10.0;
+    spec.creation_options = {"TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16"};
+    mcmd::test::make_raster(path, spec);
+    GDALDataset* ds = GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY);
+    ASSERT_NE(ds, nullptr);
+    GDALRasterBand* band = ds->GetRasterBand(1);
+    const int w = band->GetXSize(), h = band->GetYSize();
+    std::vector<double> want(static_cast<std::size_t>(w) * h);
+    ASSERT_EQ(band->RasterIO(GF_Read, 0, 0, w, h, want.data(), w, h, GDT_Float64, 0, 0, nullptr), CE_None);
+    const mcmd::gdal::PixelType pt = mcmd::gdal::pixel_type_of(*band);
+    std::vector<double> z(want.size());
+    std::vector<std::uint8_t> valid(want.size());
+    mcmd::gdal::NativeCells kept;
+    const std::size_t voids = mcmd::gdal::read_cells(*band, pt, {band->GetMaskBand()}, mcmd::gdal::Window{0, 0, w, h},
+                                                     true, z.data(), valid.data(), nullptr, &kept);
+    EXPECT_GT(voids, 0u);
+    ASSERT_EQ(kept.type, type);
+    std::vector<double> kept_values(want.size());
+    GDALCopyWords64(kept.data.get(), type, GDALGetDataTypeSizeBytes(type), kept_values.data(), GDT_Float64, 8,
+                    static_cast<GPtrDiff_t>(want.size()));
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      ASSERT_EQ(z[i], want[i]) << GDALGetDataTypeName(type) << " cell " << i;
+      ASSERT_EQ(kept_values[i], want[i]) << GDALGetDataTypeName(type) << " cell " << i;
+      ASSERT_EQ(valid[i] == 0, want[i] == *spec.nodata) << GDALGetDataTypeName(type) << " cell " << i;
+    }
+    GDALClose(GDALDataset::ToHandle(ds));
+  }
 }
 
 }  // namespace
