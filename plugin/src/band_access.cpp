@@ -15,11 +15,6 @@ std::size_t cell_count(GDALRasterBand& band) {
   return static_cast<std::size_t>(band.GetXSize()) * static_cast<std::size_t>(band.GetYSize());
 }
 
-[[noreturn]] void fail_io(const char* what) {
-  const std::string detail = CPLGetLastErrorMsg();
-  throw Failure(CPLE_FileIO, what + (detail.empty() ? "" : ": " + detail));
-}
-
 }  // namespace
 
 BandAccess::BandAccess(GDALRasterBand& source, GDALRasterBand& target, const FillRequest& request)
@@ -94,9 +89,9 @@ void BandAccess::write(int x0, int y0, int w, int h, const double* z, const std:
       int end = c;
       while (end < w && mask[base + end]) ++end;
       encode(target_type_, z + base + c, static_cast<std::size_t>(end - c), run_.data());
-      if (out.RasterIO(GF_Write, x0 + c, y0 + r, end - c, 1, run_.data(), end - c, 1, target_type_.gdt, 0, 0,
-                           nullptr) != CE_None)
-        fail_io("cannot write the filled cells");
+      check_io(out.RasterIO(GF_Write, x0 + c, y0 + r, end - c, 1, run_.data(), end - c, 1, target_type_.gdt, 0, 0,
+                            nullptr),
+               "cannot write the filled cells");
       if (!written_.empty())
         for (int k = c; k < end; ++k)
           mark_written((static_cast<std::size_t>(y0) + r) * W + static_cast<std::size_t>(x0) + k);
@@ -122,8 +117,8 @@ void BandAccess::write_over_kept(const double* z, const std::uint8_t* mask) {
     encode(target_type_, z + c, end - c, cells + c * bytes);
     c = end;
   }
-  if (target().RasterIO(GF_Write, 0, 0, W, H, cells, W, H, target_type_.gdt, 0, 0, nullptr) != CE_None)
-    fail_io("cannot write the filled cells");
+  check_io(target().RasterIO(GF_Write, 0, 0, W, H, cells, W, H, target_type_.gdt, 0, 0, nullptr),
+           "cannot write the filled cells");
   std::fill(written_.begin(), written_.end(), ~std::uint64_t{0});
   kept_ = NativeCells{};
 }
@@ -150,20 +145,21 @@ void BandAccess::complete_rows(int y0, int rows) {
   std::vector<unsigned char> from(n * bytes);
   if (kept_.type == gdt)
     std::copy_n(static_cast<const unsigned char*>(kept_.data.get()) + first * bytes, n * bytes, from.begin());
-  else if (source_.RasterIO(GF_Read, 0, y0, W, rows, from.data(), W, rows, gdt, 0, 0, nullptr) != CE_None)
-    fail_io("cannot read the band");
+  else
+    check_io(source_.RasterIO(GF_Read, 0, y0, W, rows, from.data(), W, rows, gdt, 0, 0, nullptr),
+             "cannot read the band");
   std::vector<unsigned char> to;
   if (missing < n) {  // keep what the fill wrote
     to.resize(n * bytes);
-    if (out.RasterIO(GF_Read, 0, y0, W, rows, to.data(), W, rows, gdt, 0, 0, nullptr) != CE_None)
-      fail_io("cannot read the output back");
+    check_io(out.RasterIO(GF_Read, 0, y0, W, rows, to.data(), W, rows, gdt, 0, 0, nullptr),
+             "cannot read the output back");
     for (std::size_t i = 0; i < n; ++i)
       if (!was_written(first + i)) std::copy_n(from.begin() + i * bytes, bytes, to.begin() + i * bytes);
   } else {
     to.swap(from);
   }
-  if (out.RasterIO(GF_Write, 0, y0, W, rows, to.data(), W, rows, gdt, 0, 0, nullptr) != CE_None)
-    fail_io("cannot write the known cells");
+  check_io(out.RasterIO(GF_Write, 0, y0, W, rows, to.data(), W, rows, gdt, 0, 0, nullptr),
+           "cannot write the known cells");
   for (std::size_t i = first; i < first + n; ++i) mark_written(i);
 }
 

@@ -12,13 +12,6 @@ namespace mcmd::gdal {
 
 namespace {
 
-void check_io(CPLErr err, const char* what) {
-  if (err != CE_None) {
-    const std::string detail = CPLGetLastErrorMsg();
-    throw Failure(CPLE_FileIO, std::string(what) + (detail.empty() ? "" : ": " + detail));
-  }
-}
-
 void apply_mask(GDALRasterBand& mask, const Window& win, std::uint8_t* valid) {
   // One request for the window, as bytes (a mask is 0 where invalid).
   std::vector<std::uint8_t> m(win.cells());

@@ -7,6 +7,13 @@
 
 namespace mcmd::gdal {
 
+void check_io(CPLErr err, const char* what) {
+  if (err != CE_None) {
+    const std::string detail = CPLGetLastErrorMsg();
+    throw Failure(CPLE_FileIO, std::string(what) + (detail.empty() ? "" : ": " + detail));
+  }
+}
+
 void report_current_exception() {
   try {
     throw;

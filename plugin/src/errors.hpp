@@ -18,6 +18,10 @@ class Failure : public std::runtime_error {
   CPLErrorNum num_;
 };
 
+// Throws Failure(CPLE_FileIO, "<what>: <GDAL's last error message>") unless
+// err is CE_None: the one form of every band read or write failure.
+void check_io(CPLErr err, const char* what);
+
 // Run `body`, turning every exception into one CPLError(CE_Failure, ...).
 // Returns CE_None when body returns normally.
 template <class Body>
