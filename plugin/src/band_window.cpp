@@ -191,26 +191,4 @@ WindowData read_window(GDALRasterBand& band, const PixelType& type, const std::v
   return d;
 }
 
-void write_cells(GDALRasterBand& band, const PixelType& type, const Window& win, const std::vector<double>& z,
-                 const std::vector<std::uint8_t>& write) {
-  const int bytes = GDALGetDataTypeSizeBytes(type.gdt);
-  std::vector<unsigned char> run(static_cast<std::size_t>(win.w) * bytes);
-  for (int r = 0; r < win.h; ++r) {
-    const std::size_t base = static_cast<std::size_t>(r) * win.w;
-    for (int c = 0; c < win.w;) {
-      if (!write[base + c]) {
-        ++c;
-        continue;
-      }
-      int end = c;
-      while (end < win.w && write[base + end]) ++end;
-      encode(type, z.data() + base + c, static_cast<std::size_t>(end - c), run.data());
-      check_io(band.RasterIO(GF_Write, win.x + c, win.y + r, end - c, 1, run.data(), end - c, 1, type.gdt, 0, 0,
-                             nullptr),
-               "cannot write the filled cells");
-      c = end;
-    }
-  }
-}
-
 }  // namespace mcmd::gdal

@@ -1,5 +1,5 @@
-// Reading a window of a band into memory: elevations and which cells are valid,
-// and writing filled void cells back. The unit a tiled pipeline will stream.
+// Reading a window of a band into memory: elevations and which cells are valid.
+// The unit a tiled pipeline streams (filled cells go back through BandAccess).
 #pragma once
 
 #include <cstddef>
@@ -54,10 +54,5 @@ void check_mask_size(GDALRasterBand& mask, GDALRasterBand& band);
 std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::vector<GDALRasterBand*>& masks,
                        const Window& win, bool signed_nodata, double* z, std::uint8_t* valid, bool* marked,
                        NativeCells* keep = nullptr);
-
-// Write z[i] for every cell with write[i] != 0, converted to the band's type;
-// no other cell is touched. Throws Failure on I/O errors.
-void write_cells(GDALRasterBand& band, const PixelType& type, const Window& win,
-                 const std::vector<double>& z, const std::vector<std::uint8_t>& write);
 
 }  // namespace mcmd::gdal
