@@ -15,6 +15,21 @@ std::size_t cell_count(GDALRasterBand& band) {
   return static_cast<std::size_t>(band.GetXSize()) * static_cast<std::size_t>(band.GetYSize());
 }
 
+// Calls f(c, end) for each maximal run [c, end) of non-zero bytes of mask[0, n).
+template <class F>
+void for_each_set_run(const std::uint8_t* mask, std::size_t n, F&& f) {
+  for (std::size_t c = 0; c < n;) {
+    if (!mask[c]) {
+      ++c;
+      continue;
+    }
+    std::size_t end = c;
+    while (end < n && mask[end]) ++end;
+    f(c, end);
+    c = end;
+  }
+}
+
 }  // namespace
 
 BandAccess::BandAccess(GDALRasterBand& source, GDALRasterBand& target, const FillRequest& request)
@@ -81,22 +96,15 @@ void BandAccess::write(int x0, int y0, int w, int h, const double* z, const std:
   const std::size_t W = static_cast<std::size_t>(out.GetXSize());
   for (int r = 0; r < h; ++r) {
     const std::size_t base = static_cast<std::size_t>(r) * w;
-    for (int c = 0; c < w;) {
-      if (!mask[base + c]) {
-        ++c;
-        continue;
-      }
-      int end = c;
-      while (end < w && mask[base + end]) ++end;
-      encode(target_type_, z + base + c, static_cast<std::size_t>(end - c), run_.data());
-      check_io(out.RasterIO(GF_Write, x0 + c, y0 + r, end - c, 1, run_.data(), end - c, 1, target_type_.gdt, 0, 0,
-                            nullptr),
+    for_each_set_run(mask + base, static_cast<std::size_t>(w), [&](std::size_t c, std::size_t end) {
+      const int n = static_cast<int>(end - c), x = x0 + static_cast<int>(c);
+      encode(target_type_, z + base + c, end - c, run_.data());
+      check_io(out.RasterIO(GF_Write, x, y0 + r, n, 1, run_.data(), n, 1, target_type_.gdt, 0, 0, nullptr),
                "cannot write the filled cells");
       if (!written_.empty())
-        for (int k = c; k < end; ++k)
+        for (std::size_t k = c; k < end; ++k)
           mark_written((static_cast<std::size_t>(y0) + r) * W + static_cast<std::size_t>(x0) + k);
-      c = end;
-    }
+    });
   }
 }
 
@@ -107,16 +115,8 @@ void BandAccess::write_over_kept(const double* z, const std::uint8_t* mask) {
   const std::size_t n = cell_count(source_);
   const int bytes = GDALGetDataTypeSizeBytes(target_type_.gdt);
   auto* cells = static_cast<unsigned char*>(kept_.data.get());
-  for (std::size_t c = 0; c < n;) {
-    if (!mask[c]) {
-      ++c;
-      continue;
-    }
-    std::size_t end = c;
-    while (end < n && mask[end]) ++end;
-    encode(target_type_, z + c, end - c, cells + c * bytes);
-    c = end;
-  }
+  for_each_set_run(mask, n,
+                   [&](std::size_t c, std::size_t end) { encode(target_type_, z + c, end - c, cells + c * bytes); });
   check_io(target().RasterIO(GF_Write, 0, 0, W, H, cells, W, H, target_type_.gdt, 0, 0, nullptr),
            "cannot write the filled cells");
   std::fill(written_.begin(), written_.end(), ~std::uint64_t{0});
