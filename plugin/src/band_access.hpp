@@ -15,7 +15,7 @@
 #include "band_window.hpp"
 #include "fill_band.hpp"
 #include "gdal_priv.h"
-#include "mcmd/tiled_fill.hpp"
+#include "mcmd/fill_raster.hpp"
 #include "pixel_type.hpp"
 
 namespace mcmd::gdal {

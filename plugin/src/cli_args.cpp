@@ -4,7 +4,6 @@
 #include <map>
 
 #include "cpl_string.h"
-#include "options.hpp"
 
 namespace mcmd::cli {
 
@@ -91,7 +90,7 @@ Args parse_args(int argc, const char* const* argv) {
   CPLStringList opts;
   for (const std::string& o : a.fill_options) opts.AddString(o.c_str());
   try {
-    (void)gdal::parse_options(opts.List());
+    a.fill = gdal::parse_options(opts.List());
   } catch (const gdal::OptionError& e) {
     throw UsageError(e.what());
   }

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "options.hpp"
+
 namespace mcmd::cli {
 
 // A malformed command line; what() is one line.
@@ -22,13 +24,14 @@ struct Args {
   std::string mask_file;                      // "" = none
   std::string format;                         // "" = guess from dst_file's extension
   std::vector<std::string> creation_options;  // -co NAME=VALUE
-  std::vector<std::string> fill_options;      // NAME=VALUE for MCMDFillNodata
+  std::vector<std::string> fill_options;      // NAME=VALUE for MCMDFillNodata, as given
+  gdal::Options fill;                         // fill_options, parsed
   std::string src;
   std::string dst;  // "" = in place
 };
 
-// Parse argv (argv[0] is skipped). Validates the fill options too, so an
-// absurd parameter is reported before any file is opened. Throws UsageError.
+// Parse argv (argv[0] is skipped), the fill options included, so an absurd
+// parameter is reported before any file is opened. Throws UsageError.
 Args parse_args(int argc, const char* const* argv);
 
 }  // namespace mcmd::cli

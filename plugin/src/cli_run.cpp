@@ -11,7 +11,7 @@
 #include "dataset.hpp"
 #include "errors.hpp"
 #include "fill_band.hpp"
-#include "mcmd/tiled_fill.hpp"
+#include "mcmd/fill_raster.hpp"
 #include "output_file.hpp"
 
 namespace mcmd::cli {
@@ -110,9 +110,7 @@ void clear_statistics(GDALRasterBand& band) {
 // still being made, which each band asks for at its first write.
 void fill_bands(GDALDataset& source, BackgroundCopy* copy, const std::vector<int>& bands, GDALRasterBand* file_mask,
                 const Args& args, const ProgressSlice& slice) {
-  CPLStringList list;
-  for (const std::string& o : args.fill_options) list.AddString(o.c_str());
-  const gdal::Options options = gdal::parse_options(list.List());
+  const gdal::Options& options = args.fill;
   if (!copy && bands.size() > 1)  // in place: refuse before writing anything
     for (int b : bands) gdal::check_band(*source.GetRasterBand(b), request_for(source, b, file_mask, args));
   for (std::size_t i = 0; i < bands.size(); ++i) {
@@ -184,11 +182,10 @@ bool fill_output_directly(GDALDriver* driver, const CPLStringList& co) {
   return !compress || EQUAL(compress, "NONE");
 }
 
-// A raster small enough for the fill to read whole once and write at the end
-// (the core's small-raster path): its copy is made while the fill works.
-bool copy_in_background(GDALDataset& src) {
-  return static_cast<std::size_t>(src.GetRasterXSize()) * static_cast<std::size_t>(src.GetRasterYSize()) <=
-         kWholeRasterMaxCells;
+// A raster the fill reads whole once and writes at the end (the core's
+// small-raster path): its copy is made while the fill works.
+bool copy_in_background(GDALDataset& src, const Args& args) {
+  return fills_whole(src.GetRasterXSize(), src.GetRasterYSize(), args.fill.fill, gdal::tiling_of(args.fill));
 }
 
 void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
@@ -219,7 +216,7 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   GDALDriver* driver = output_driver(args);
   const CPLStringList co = creation_options(args, driver, log);
   TempOutput out(args.dst, driver);
-  if (fill_output_directly(driver, co) && copy_in_background(*src)) {
+  if (fill_output_directly(driver, co) && copy_in_background(*src, args)) {
     BackgroundCopy dst(driver, args.src, out.path(), co, args.dst, [] { return g_interrupted == 0; },
                        src->GetRasterCount() == 1);
     log.reset();

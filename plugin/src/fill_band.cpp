@@ -7,7 +7,7 @@
 #include "band_access.hpp"
 #include "band_window.hpp"
 #include "errors.hpp"
-#include "mcmd/tiled_fill.hpp"
+#include "mcmd/fill_raster.hpp"
 
 namespace mcmd::gdal {
 
@@ -54,13 +54,9 @@ namespace {
 
 void fill_band_access(BandAccess& band, const FillRequest& request, const Options& options,
                       const ProgressFn& progress) {
-  TilingParams tiling;
-  tiling.tile_side = options.tile_size;
-  tiling.always_tile = options.always_tile;
-  tiling.threads = options.num_threads;
-  tiling.max_distance = options.max_distance;
-  TiledFillStats stats;
-  TiledFillHooks hooks;
+  const TilingParams tiling = tiling_of(options);
+  RasterFillStats stats;
+  RasterFillHooks hooks;
   hooks.stats = &stats;
   const bool marked = !request.masks.empty() || band.nodata_marks_voids();
   // The core's passes take [0, 0.99]: 100% ("done") is reported only once the
@@ -68,7 +64,7 @@ void fill_band_access(BandAccess& band, const FillRequest& request, const Option
   // report (before it writes a one-tile raster) leaves the band untouched.
   const ProgressFn capped = sub_progress(progress, 0.0, 0.99);
   try {
-    tiled_fill(band.access(), options.fill, tiling, capped, hooks);
+    fill_raster(band.access(), options.fill, tiling, capped, hooks);
   } catch (const std::invalid_argument&) {
     // Checked after the first pass, before anything is written.
     if (stats.void_cells > 0 && stats.known_cells == 0) fail_no_valid(request);

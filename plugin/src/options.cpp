@@ -134,6 +134,15 @@ const char* option_names() {
          "MAX_DISTANCE, TILE_SIZE, TILING, NUM_THREADS";
 }
 
+TilingParams tiling_of(const Options& o) {
+  TilingParams t;
+  t.tile_side = o.tile_size;
+  t.always_tile = o.always_tile;
+  t.threads = o.num_threads;
+  t.max_distance = o.max_distance;
+  return t;
+}
+
 Options parse_options(CSLConstList options) {
   Options out;
   for (CSLConstList p = options; p && *p; ++p) {

@@ -5,7 +5,8 @@
 #include <string>
 
 #include "cpl_port.h"
-#include "mcmd/fill.hpp"
+#include "mcmd/params.hpp"
+#include "mcmd/raster_access.hpp"
 
 namespace mcmd::gdal {
 
@@ -22,6 +23,9 @@ struct Options {
   bool always_tile = false;   // TILING=ALWAYS (mcmd::TilingParams::always_tile)
   int num_threads = 0;        // 0 = all CPUs
 };
+
+// The raster engine's tiling parameters of `o`.
+TilingParams tiling_of(const Options& o);
 
 // Parse NAME=VALUE strings (names case-insensitive). Throws OptionError.
 Options parse_options(CSLConstList options);

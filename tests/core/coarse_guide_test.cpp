@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "mcmd/coarse_guide.hpp"
+#include "raster/coarse_guide.hpp"
 
 namespace {
 

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "mcmd/delta.hpp"
+#include "paper/delta.hpp"
 
 using namespace mcmd;
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "mcmd/distance.hpp"
+#include "common/distance.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "mcmd/grid.hpp"
+#include "common/grid.hpp"
 
 namespace {
 

@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "mcmd/lattice.hpp"
-#include "mcmd/pull_push.hpp"
+#include "thin_plate/lattice.hpp"
+#include "thin_plate/pull_push.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "mcmd/line.hpp"
+#include "paper/line.hpp"
 
 using namespace mcmd;
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "mcmd/noise.hpp"
+#include "roughness/noise.hpp"
 
 using namespace mcmd;
 

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "mcmd/padding.hpp"
+#include "common/padding.hpp"
 
 using namespace mcmd;
 

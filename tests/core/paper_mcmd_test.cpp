@@ -4,9 +4,10 @@
 #include <cmath>
 #include <vector>
 
-#include "mcmd/fill.hpp"
-#include "mcmd/mdbu.hpp"
-#include "mcmd/midpoint_displacement.hpp"
+#include "method/fill_grid.hpp"
+#include "paper/paper_fill.hpp"
+#include "paper/mdbu.hpp"
+#include "paper/midpoint_displacement.hpp"
 #include "test_terrain.hpp"
 
 using namespace mcmd;
@@ -39,7 +40,7 @@ std::vector<std::uint8_t> fixed_of(const Grid& g) {
 TEST_P(PaperMethods, KnownCellsNeverChange) {
   const Grid before = voided_hills();
   Grid g = before;
-  fill(g, params());
+  fill_grid(g, params());
   for (std::size_t i = 0; i < g.cell_count(); ++i) {
     ASSERT_EQ(g.states()[i], before.states()[i]);
     if (is_constraint(before.states()[i])) {
@@ -80,7 +81,7 @@ TEST_P(PaperMethods, RaisedCentreGivesAMonotoneProfile) {
     for (int r : {0, last}) g.z(c, r) = 100.0, g.state(c, r) = CellState::known;
   g.z(mid, mid) = 900.0;
   g.state(mid, mid) = CellState::known;
-  fill(g, params());
+  fill_grid(g, params());
   for (int x = mid; x < last; ++x) ASSERT_GE(g.z(x, mid), g.z(x + 1, mid)) << x;           // centre → edge
   for (int d = mid; d < last; ++d) ASSERT_GE(g.z(d, d), g.z(d + 1, d + 1)) << d;           // centre → corner
   for (int x = 0; x < mid; ++x) ASSERT_LE(g.z(x, mid), g.z(x + 1, mid)) << x;
@@ -93,8 +94,8 @@ TEST_P(PaperMethods, NormalizedFormIsTranslationInvariant) {
   Grid b = a;
   for (std::size_t i = 0; i < b.cell_count(); ++i)
     if (is_constraint(b.states()[i])) b.elevations()[i] += 1234.5;
-  fill(a, p);
-  fill(b, p);
+  fill_grid(a, p);
+  fill_grid(b, p);
   for (std::size_t i = 0; i < a.cell_count(); ++i) ASSERT_NEAR(b.elevations()[i], a.elevations()[i] + 1234.5, 1e-6);
 }
 
@@ -104,9 +105,9 @@ TEST_P(PaperMethods, PaperFormWithShapesPullsTowardZero) {
   p.known_shape = {0.8, 0.8};
   Grid exact = voided_hills();
   Grid normalized = exact;
-  fill(exact, p);
+  fill_grid(exact, p);
   p.delta_form = DeltaForm::normalized;
-  fill(normalized, p);
+  fill_grid(normalized, p);
   double lower = 0;
   for (std::size_t i = 0; i < exact.cell_count(); ++i) lower += normalized.elevations()[i] - exact.elevations()[i];
   EXPECT_GT(lower, 0.0);
@@ -117,10 +118,10 @@ TEST_P(PaperMethods, SameSeedSameTerrainOtherSeedOther) {
   p.rs = 0.2;
   p.seed = 11;
   Grid a = voided_hills(), b = voided_hills(), c = voided_hills();
-  fill(a, p);
-  fill(b, p);
+  fill_grid(a, p);
+  fill_grid(b, p);
   p.seed = 12;
-  fill(c, p);
+  fill_grid(c, p);
   EXPECT_EQ(a.elevations(), b.elevations());
   EXPECT_NE(a.elevations(), c.elevations());
 }
@@ -132,22 +133,22 @@ TEST_P(PaperMethods, RidgeCellsCarryTheirOwnShape) {
     if (is_constraint(ridged.state(x, 20))) ridged.state(x, 20) = CellState::ridge;
   FillParams p = params();
   p.ridge_shape = {-2.0, 6.0};
-  fill(plain, p);
-  fill(ridged, p);
+  fill_grid(plain, p);
+  fill_grid(ridged, p);
   EXPECT_NE(plain.elevations(), ridged.elevations());
 }
 
 TEST_P(PaperMethods, ProgressEndsAtOneAndCancelStops) {
   double last = -1;
   Grid g = voided_hills();
-  fill(g, params(), [&](double f) {
+  fill_grid(g, params(), [&](double f) {
     EXPECT_GE(f, last);
     last = f;
     return true;
   });
   EXPECT_DOUBLE_EQ(last, 1.0);
   Grid h = voided_hills();
-  EXPECT_THROW(fill(h, params(), [](double f) { return f < 0.3; }), Cancelled);
+  EXPECT_THROW(fill_grid(h, params(), [](double f) { return f < 0.3; }), Cancelled);
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSchemes, PaperMethods, ::testing::Values(Method::paper_ds, Method::paper_te),
@@ -155,5 +156,5 @@ INSTANTIATE_TEST_SUITE_P(BothSchemes, PaperMethods, ::testing::Values(Method::pa
 
 TEST(Fill, RejectsAGridWithoutKnownCells) {
   Grid g(3);
-  EXPECT_THROW(fill(g, FillParams{}), std::invalid_argument);
+  EXPECT_THROW(fill_grid(g, FillParams{}), std::invalid_argument);
 }

@@ -11,9 +11,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "mcmd/fill.hpp"
-#include "mcmd/roughness.hpp"
-#include "mcmd/thin_plate_schedule.hpp"
+#include "method/fill_grid.hpp"
+#include "roughness/roughness.hpp"
+#include "thin_plate/schedule.hpp"
 
 namespace {
 
@@ -75,9 +75,9 @@ TEST(Roughness, AutoIsDeterministicPerSeed) {
   Grid base = fbm(7, 0.7, 1);
   punch_disc(base, 64, 64, 25);
   Grid a = base, b = base, c = base;
-  mcmd::fill(a, auto_params(11));
-  mcmd::fill(b, auto_params(11));
-  mcmd::fill(c, auto_params(12));
+  mcmd::fill_grid(a, auto_params(11));
+  mcmd::fill_grid(b, auto_params(11));
+  mcmd::fill_grid(c, auto_params(12));
   EXPECT_EQ(std::memcmp(a.elevations().data(), b.elevations().data(), a.cell_count() * sizeof(double)), 0);
   EXPECT_NE(std::memcmp(a.elevations().data(), c.elevations().data(), a.cell_count() * sizeof(double)), 0);
   for (std::size_t i = 0; i < a.cell_count(); ++i)
@@ -118,8 +118,8 @@ TEST(Roughness, AutoRoughnessMatchesTheTerrain) {
   Grid smooth = truth, rough = truth;
   punch_disc(smooth, 128, 128, 40);
   punch_disc(rough, 128, 128, 40);
-  mcmd::fill(smooth, {});
-  mcmd::fill(rough, auto_params(5));
+  mcmd::fill_grid(smooth, {});
+  mcmd::fill_grid(rough, auto_params(5));
   const double terrain = curvature(truth, 128, 128, 40, false);
   const double smooth_ratio = curvature(smooth, 128, 128, 40, true) / terrain;
   const double rough_ratio = curvature(rough, 128, 128, 40, true) / terrain;
@@ -132,12 +132,12 @@ TEST(Roughness, ManualAmplitudeScalesWithRs) {
   Grid base = fbm(7, 0.7, 4);
   punch_disc(base, 64, 64, 25);
   Grid smooth = base, small = base, big = base;
-  mcmd::fill(smooth, {});
+  mcmd::fill_grid(smooth, {});
   mcmd::FillParams p;
   p.rs = 0.01;
-  mcmd::fill(small, p);
+  mcmd::fill_grid(small, p);
   p.rs = 0.04;
-  mcmd::fill(big, p);
+  mcmd::fill_grid(big, p);
   double ds = 0, db = 0;
   for (std::size_t i = 0; i < base.cell_count(); ++i) {
     ds = std::max(ds, std::abs(small.elevations()[i] - smooth.elevations()[i]));
@@ -170,7 +170,7 @@ TEST(Roughness, AutoFollowsTheTerrainAroundEachVoid) {
   Grid rough = truth;
   punch_disc(rough, 56, 128, 24);
   punch_disc(rough, 200, 128, 24);
-  mcmd::fill(rough, auto_params(7));
+  mcmd::fill_grid(rough, auto_params(7));
   for (double cx : {56.0, 200.0}) {
     // Terrain: the ring 26..50 cells around the void, on the void's own half.
     double s = 0;
@@ -328,11 +328,11 @@ TEST(Roughness, RoughnessIsConditionedOnTheConstraints) {
   Grid base = fbm(8, 0.6, 8);
   punch_disc(base, 128, 128, 40);
   Grid smooth = base, rough = base;
-  mcmd::fill(smooth, {});
+  mcmd::fill_grid(smooth, {});
   mcmd::FillParams p;
   p.rs = 0.05;
   p.seed = 3;
-  mcmd::fill(rough, p);
+  mcmd::fill_grid(rough, p);
   double rim = 0, deep = 0;
   int n_rim = 0, n_deep = 0;
   for (int y = 0; y < base.side(); ++y)

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "mcmd/subdivision.hpp"
+#include "paper/subdivision.hpp"
 
 using namespace mcmd;
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <functional>
 
-#include "mcmd/grid.hpp"
-#include "mcmd/noise.hpp"
+#include "common/grid.hpp"
+#include "roughness/noise.hpp"
 
 namespace mcmd::test {
 

@@ -7,8 +7,8 @@
 #include <random>
 #include <vector>
 
-#include "mcmd/lattice.hpp"
-#include "mcmd/thin_plate_schedule.hpp"
+#include "thin_plate/lattice.hpp"
+#include "thin_plate/schedule.hpp"
 
 namespace {
 

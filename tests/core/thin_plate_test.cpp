@@ -7,12 +7,12 @@
 #include <cstring>
 #include <random>
 
-#include "mcmd/biharmonic_relax.hpp"
-#include "mcmd/cubic_prolong.hpp"
-#include "mcmd/fill.hpp"
-#include "mcmd/multigrid.hpp"
-#include "mcmd/thin_plate.hpp"
-#include "mcmd/thin_plate_schedule.hpp"
+#include "thin_plate/biharmonic_relax.hpp"
+#include "thin_plate/cubic_prolong.hpp"
+#include "method/fill_grid.hpp"
+#include "thin_plate/multigrid.hpp"
+#include "thin_plate/thin_plate.hpp"
+#include "thin_plate/schedule.hpp"
 
 namespace {
 
@@ -47,7 +47,7 @@ double max_error(const Grid& filled, const Grid& truth) {
   return e;
 }
 
-void fill_default(Grid& g, const mcmd::FillParams& p = {}) { mcmd::fill(g, p); }
+void fill_default(Grid& g, const mcmd::FillParams& p = {}) { mcmd::fill_grid(g, p); }
 
 TEST(ThinPlate, ExactOnTiltedPlaneWithRandomVoids) {
   const auto plane = [](int x, int y) { return 1234.5 + 0.7 * x - 0.4 * y; };

@@ -12,13 +12,14 @@
 #include <random>
 #include <vector>
 
-#include "mcmd/coarse_guide.hpp"
-#include "mcmd/distance.hpp"
-#include "mcmd/padding.hpp"
-#include "mcmd/tile_layout.hpp"
-#include "mcmd/tile_window.hpp"
-#include "mcmd/thin_plate_schedule.hpp"
-#include "mcmd/tiled_fill.hpp"
+#include "method/fill_grid.hpp"
+#include "raster/coarse_guide.hpp"
+#include "common/distance.hpp"
+#include "common/padding.hpp"
+#include "raster/tiles/tile_layout.hpp"
+#include "raster/tiles/tile_window.hpp"
+#include "thin_plate/schedule.hpp"
+#include "mcmd/fill_raster.hpp"
 #include "test_terrain.hpp"
 
 using namespace mcmd;
@@ -84,8 +85,8 @@ double terrain(int x, int y) {
 
 // Hooks that record a run's statistics (not copyable: hooks point at stats).
 struct Recorded {
-  TiledFillStats stats;
-  TiledFillHooks hooks;
+  RasterFillStats stats;
+  RasterFillHooks hooks;
   Recorded() { hooks.stats = &stats; }
   Recorded(const Recorded&) = delete;
 };
@@ -118,12 +119,12 @@ void punch_disc(MemRaster& r, double cx, double cy, double radius) {
       if (std::hypot(x - cx, y - cy) <= radius) r.valid[r.at(x, y)] = 0;
 }
 
-std::vector<double> run(MemRaster& r, int tile, int threads, const TiledFillHooks& hooks = {}) {
+std::vector<double> run(MemRaster& r, int tile, int threads, const RasterFillHooks& hooks = {}) {
   TilingParams tp;
   tp.tile_side = tile;
   tp.always_tile = tile != 0;  // these tests are about tiles
   tp.threads = threads;
-  tiled_fill(r.access(), FillParams{}, tp, {}, hooks);
+  fill_raster(r.access(), FillParams{}, tp, {}, hooks);
   return r.out;
 }
 
@@ -212,8 +213,8 @@ TEST(TiledFill, OddRasterSizesFillCompletelyAndNeverWriteKnownCells) {
       MemRaster r = make_raster(s[0], s[1]);
       if (s[0] == 2) r.valid = {1, 0, 0, 1};
       const std::size_t voids = r.voids();
-      TiledFillStats stats;
-      TiledFillHooks hooks;
+      RasterFillStats stats;
+      RasterFillHooks hooks;
       hooks.stats = &stats;
       run(r, tile, 2, hooks);
       SCOPED_TRACE(testing::Message() << s[0] << "x" << s[1] << " tile " << tile);
@@ -303,8 +304,8 @@ TEST(TiledFill, VoidLargerThanATileFills) {
   for (int y = 20; y < 240; ++y)
     for (int x = 30; x < 270; ++x) r.valid[r.at(x, y)] = 0;  // 240×220 void, tiles of 33
   Recorded rec;
-  TiledFillStats& stats = rec.stats;
-  const TiledFillHooks& hooks = rec.hooks;
+  RasterFillStats& stats = rec.stats;
+  const RasterFillHooks& hooks = rec.hooks;
   run(r, 33, 2, hooks);
   EXPECT_TRUE(r.complete());
   EXPECT_EQ(r.known_writes, 0u);
@@ -322,13 +323,13 @@ TEST(TiledFill, BitIdenticalForAnyThreadCountAndOrder) {
   const std::vector<double> one = run(r, 33, 1);
   EXPECT_TRUE(bit_identical(one, run(r, 33, 2)));
   EXPECT_TRUE(bit_identical(one, run(r, 33, 4)));
-  TiledFillHooks shuffled;
+  RasterFillHooks shuffled;
   shuffled.reorder = [](std::vector<std::size_t>& order) {
     std::mt19937 rng(7);
     std::shuffle(order.begin(), order.end(), rng);
   };
   EXPECT_TRUE(bit_identical(one, run(r, 33, 3, shuffled)));
-  TiledFillHooks reversed;
+  RasterFillHooks reversed;
   reversed.reorder = [](std::vector<std::size_t>& order) { std::reverse(order.begin(), order.end()); };
   EXPECT_TRUE(bit_identical(one, run(r, 33, 1, reversed)));
 }
@@ -350,8 +351,8 @@ TEST(TiledFill, VoidFreeTilesAreNotSolved) {
   MemRaster r = terrain_raster(400, 400);
   punch_disc(r, 30, 30, 5);
   Recorded rec;
-  TiledFillStats& stats = rec.stats;
-  const TiledFillHooks& hooks = rec.hooks;
+  RasterFillStats& stats = rec.stats;
+  const RasterFillHooks& hooks = rec.hooks;
   run(r, 65, 2, hooks);
   EXPECT_EQ(stats.tiles_x * stats.tiles_y, 49);
   EXPECT_EQ(stats.windows_solved, 0u);  // a small void is solved alone
@@ -378,7 +379,7 @@ TEST(TiledFill, MaxDistanceLeavesFarCellsUnwritten) {
   tp.tile_side = 129;  // halo 64, band 16: exact up to 46 cells
   tp.always_tile = true;
   tp.max_distance = 10.0;
-  tiled_fill(r.access(), FillParams{}, tp);
+  fill_raster(r.access(), FillParams{}, tp);
   const std::vector<double> dist = distance_to_valid(r.valid.data(), r.w, r.h);
   for (std::size_t i = 0; i < dist.size(); ++i) {
     if (r.valid[i]) continue;
@@ -395,7 +396,7 @@ TEST(TiledFill, MaxDistanceBeyondTheHaloUsesTheGuide) {
   tp.tile_side = 33;  // halo 16, band 4: exact up to 12 cells in a window
   tp.always_tile = true;
   tp.max_distance = 40.0;
-  tiled_fill(r.access(), FillParams{}, tp);
+  fill_raster(r.access(), FillParams{}, tp);
   const std::vector<double> dist = distance_to_valid(r.valid.data(), r.w, r.h);
   std::size_t written = 0, expected = 0;
   for (std::size_t i = 0; i < dist.size(); ++i) {
@@ -419,7 +420,7 @@ TEST(TiledFill, CancelStopsWithCancelled) {
     ++calls;
     return f < 0.5;
   };
-  EXPECT_THROW(tiled_fill(r.access(), FillParams{}, tp, stop), Cancelled);
+  EXPECT_THROW(fill_raster(r.access(), FillParams{}, tp, stop), Cancelled);
   EXPECT_GT(calls, 1);
   int last_calls = 0;
   double last = -1.0;
@@ -430,7 +431,7 @@ TEST(TiledFill, CancelStopsWithCancelled) {
     ++last_calls;
     return true;
   };
-  tiled_fill(r.access(), FillParams{}, tp, watch);
+  fill_raster(r.access(), FillParams{}, tp, watch);
   EXPECT_TRUE(monotone);
   EXPECT_EQ(last, 1.0);
 }
@@ -441,7 +442,7 @@ TEST(TiledFill, CancelInTheSmallRasterPathWritesNothing) {
   TilingParams tp;
   tp.threads = 2;
   const ProgressFn stop = [](double f) { return f < 0.5; };
-  EXPECT_THROW(tiled_fill(r.access(), FillParams{}, tp, stop), Cancelled);
+  EXPECT_THROW(fill_raster(r.access(), FillParams{}, tp, stop), Cancelled);
   EXPECT_EQ(r.writes, 0u);
 }
 
@@ -449,13 +450,13 @@ TEST(TiledFill, RejectsBadInput) {
   MemRaster r = make_raster(50, 50);
   TilingParams tp;
   tp.tile_side = 100;
-  EXPECT_THROW(tiled_fill(r.access(), FillParams{}, tp), std::invalid_argument);
+  EXPECT_THROW(fill_raster(r.access(), FillParams{}, tp), std::invalid_argument);
   tp.tile_side = 17;
   tp.max_distance = -1;
-  EXPECT_THROW(tiled_fill(r.access(), FillParams{}, tp), std::invalid_argument);
+  EXPECT_THROW(fill_raster(r.access(), FillParams{}, tp), std::invalid_argument);
   MemRaster empty(40, 30);
   std::fill(empty.valid.begin(), empty.valid.end(), 0);
-  EXPECT_THROW(tiled_fill(empty.access(), FillParams{}, TilingParams{}), std::invalid_argument);
+  EXPECT_THROW(fill_raster(empty.access(), FillParams{}, TilingParams{}), std::invalid_argument);
 }
 
 TEST(TiledFill, HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains) {
@@ -507,7 +508,7 @@ TEST(TiledFill, SmallVoidIsSolvedAloneWhateverTheTiles) {
   for (std::size_t i = 0; i < r.z.size(); ++i)
     if (r.valid[i]) lo = std::min(lo, r.z[i]), hi = std::max(hi, r.z[i]);
   p.noise_unit = hi - lo;
-  fill(g, p);
+  fill_grid(g, p);
   for (int v = 0; v < g.side(); ++v)
     for (int u = 0; u < g.side(); ++u) {
       const std::size_t i = r.at(g.origin_x() + u, g.origin_y() + v);
@@ -522,8 +523,8 @@ TEST(TiledFill, SmallAndLargeVoidsTogetherAreDeterministic) {
   punch_disc(r, 200, 150, 70);                // a large one across several tiles
   punch_disc(r, 64, 64, 12);                  // a small one on a seam crossing
   Recorded rec;
-  TiledFillStats& stats = rec.stats;
-  const TiledFillHooks& hooks = rec.hooks;
+  RasterFillStats& stats = rec.stats;
+  const RasterFillHooks& hooks = rec.hooks;
   const std::vector<double> one = run(r, 65, 1, hooks);
   EXPECT_GT(stats.small_components, 100u);
   EXPECT_GT(stats.windows_solved, 0u);
@@ -532,7 +533,7 @@ TEST(TiledFill, SmallAndLargeVoidsTogetherAreDeterministic) {
   for (std::size_t i = 0; i < r.write_count.size(); ++i) EXPECT_EQ(r.write_count[i], r.valid[i] ? 0 : 1);
   EXPECT_TRUE(bit_identical(one, run(r, 65, 2)));
   EXPECT_TRUE(bit_identical(one, run(r, 65, 4)));
-  TiledFillHooks shuffled;
+  RasterFillHooks shuffled;
   shuffled.reorder = [](std::vector<std::size_t>& order) {
     std::mt19937 rng(3);
     std::shuffle(order.begin(), order.end(), rng);
@@ -563,8 +564,8 @@ TEST(TiledFill, SmallRasterSolvesEachVoidInItsOwnField) {
   MemRaster r = terrain_raster(400, 300);
   punch_disc(r, 80, 90, 10);  // box [70, 90] × [80, 100], extent 21: field [17, 143] × [27, 153]
   Recorded rec;
-  TiledFillStats& stats = rec.stats;
-  const TiledFillHooks& hooks = rec.hooks;
+  RasterFillStats& stats = rec.stats;
+  const RasterFillHooks& hooks = rec.hooks;
   const std::vector<double> alone = run(r, 0, 1, hooks);
   EXPECT_EQ(stats.tile_side, 0);
   EXPECT_EQ(stats.windows_solved, 0u);
@@ -655,7 +656,7 @@ TEST(TiledFill, OneFieldHonoursMaxDistanceExactly) {
   punch_disc(r, 100, 60, 20);
   TilingParams tp;
   tp.max_distance = 5.0;
-  tiled_fill(r.access(), FillParams{}, tp);
+  fill_raster(r.access(), FillParams{}, tp);
   const std::vector<double> dist = distance_to_valid(r.valid.data(), r.w, r.h);
   for (std::size_t i = 0; i < dist.size(); ++i) {
     if (r.valid[i]) continue;
@@ -672,28 +673,28 @@ TEST(TiledFill, TilesWhenAskedForPaperOrFarReachingVoids) {
   MemRaster r = terrain_raster(300, 300);
   punch_disc(r, 150, 150, 20);
   Recorded rec;
-  TiledFillStats& stats = rec.stats;
-  const TiledFillHooks& hooks = rec.hooks;
+  RasterFillStats& stats = rec.stats;
+  const RasterFillHooks& hooks = rec.hooks;
   run(r, 65, 2, hooks);
   EXPECT_EQ(stats.tile_side, 65);
   TilingParams tp;
   FillParams paper;
   paper.method = Method::paper_ds;
-  tiled_fill(r.access(), paper, tp, {}, hooks);
+  fill_raster(r.access(), paper, tp, {}, hooks);
   EXPECT_GT(stats.tile_side, 0);
 
   FillParams rough;
   rough.rs_auto = true;
   tp.threads = 2;
-  tiled_fill(r.access(), rough, tp, {}, hooks);
+  fill_raster(r.access(), rough, tp, {}, hooks);
   EXPECT_EQ(stats.tile_side, 0);
   EXPECT_TRUE(r.complete());
   const std::vector<double> two = r.out;
   tp.threads = 1;
-  tiled_fill(r.access(), rough, tp);
+  fill_raster(r.access(), rough, tp);
   EXPECT_TRUE(bit_identical(r.out, two));
   rough.seed = 7;
-  tiled_fill(r.access(), rough, tp);
+  fill_raster(r.access(), rough, tp);
   EXPECT_FALSE(bit_identical(r.out, two));
 
   punch_disc(r, 150, 150, 140);  // a void cell 140 cells from data

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "cpl_string.h"
-#include "mcmd/distance.hpp"
+#include "common/distance.hpp"
 #include "mcmd_gdal.h"
 #include "options.hpp"
 #include "pixel_type.hpp"

@@ -1,0 +1,302 @@
+#include "method/fill_grid.hpp"
+#include "raster/coarse_guide.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <atomic>
+#include <exception>
+#include <stdexcept>
+#include <thread>
+
+#include "common/distance.hpp"
+#include "common/padding.hpp"
+#include "thin_plate/schedule.hpp"
+
+namespace mcmd {
+
+int guide_stride(int width, int height, int max_side) {
+  const long long longest = std::max(width, height);
+  int s = 1;
+  while ((longest - 1 + s - 1) / s + 1 > max_side) s *= 2;
+  return s;
+}
+
+CoarseGuide::CoarseGuide(int width, int height, int stride)
+    : width_(width), height_(height), stride_(stride) {
+  if (width < 1 || height < 1) throw std::invalid_argument("raster size must be >= 1");
+  if (stride < 1 || (stride & (stride - 1)) != 0) throw std::invalid_argument("guide stride must be a power of two");
+  // The last lattice point lies on or past the last raster cell, so that
+  // interpolation inside the raster never needs the mirrored lattice.
+  cw_ = (width - 1 + stride - 1) / stride + 1;
+  ch_ = (height - 1 + stride - 1) / stride + 1;
+  moments_.assign(static_cast<std::size_t>(cw_) * ch_, Moments{});
+}
+
+void CoarseGuide::add_rows(int y0, int rows, const double* z, const std::uint8_t* valid) {
+  const int half = stride_ / 2;
+  // Lattice index of the block holding raster coordinate v: floor((v + S/2) / S).
+  auto lattice_of = [&](int v) { return (v + half) / stride_; };
+  for (int r = 0; r < rows; ++r) {
+    const int j = lattice_of(y0 + r);
+    if (j >= ch_) continue;  // past the last lattice row's block
+    Moments* mrow = moments_.data() + static_cast<std::size_t>(j) * cw_;
+    const double dy = static_cast<double>(y0 + r) - static_cast<double>(j) * stride_;
+    const double* zr = z + static_cast<std::size_t>(r) * width_;
+    const std::uint8_t* vr = valid + static_cast<std::size_t>(r) * width_;
+    // Block by block, the block's sums held in locals: the same additions in
+    // the same order as cell by cell into memory, without a store and reload
+    // between the cells of a block (a 1201² raster: 9 → 4 ms). Offsets are
+    // integers, so the count and the coordinate moments are summed exactly
+    // as integers (in any order: the same doubles); only the elevation sums
+    // are floating point, in raster order.
+    const long long iy = y0 + r - static_cast<long long>(j) * stride_;
+    for (int i = 0; i < cw_; ++i) {
+      const int xa = std::max(0, i * stride_ - half), xb = std::min(width_, i * stride_ - half + stride_);
+      if (xa >= xb) break;
+      Moments m = mrow[i];
+      long long n = 0, sx = 0, sxx = 0;
+      for (int x = xa; x < xb; ++x) {
+        if (!vr[x]) continue;
+        const long long ix = x - static_cast<long long>(i) * stride_;
+        const double dx = static_cast<double>(ix), zv = zr[x];
+        n += 1;
+        sx += ix;
+        sxx += ix * ix;
+        m.z += zv;
+        m.zx += zv * dx;
+        m.zy += zv * dy;
+      }
+      m.n += static_cast<double>(n);
+      m.x += static_cast<double>(sx);
+      m.y += static_cast<double>(n * iy);
+      m.xx += static_cast<double>(sxx);
+      m.yy += static_cast<double>(n * iy * iy);
+      m.xy += static_cast<double>(sx * iy);
+      mrow[i] = m;
+    }
+  }
+}
+
+namespace {
+// The block's plane fit evaluated at the lattice point (offset 0, 0).
+double plane_at_lattice(double n, double z, double x, double y, double xx, double yy, double xy, double zx,
+                        double zy, int stride) {
+  const double mz = z / n, mx = x / n, my = y / n;
+  // Centred second moments, regularised so that few or collinear cells give
+  // a mean-like value instead of a wild extrapolation.
+  const double reg = 0.02 * (static_cast<double>(stride) * stride) / 12.0 + 1e-9;
+  const double cxx = xx / n - mx * mx + reg, cyy = yy / n - my * my + reg, cxy = xy / n - mx * my;
+  const double czx = zx / n - mz * mx, czy = zy / n - mz * my;
+  const double det = cxx * cyy - cxy * cxy;
+  const double gx = (cyy * czx - cxy * czy) / det;
+  const double gy = (cxx * czy - cxy * czx) / det;
+  return mz - gx * mx - gy * my;
+}
+}  // namespace
+
+// A pure thin plate extends the slopes at a void's edge linearly: fine across
+// a blob, but across a void hundreds or thousands of cells wide it builds
+// mountains and trenches out of the slopes at its rim. Far from data the
+// guide becomes a thin plate under tension, whose membrane term lets slopes
+// level off over kSlopeReach cells instead, weighted in per void with how
+// far that void reaches: ordinary voids keep the plain thin plate, and a
+// huge void does not put its neighbours under tension.
+constexpr double kSlopeReach = 8.0;         // raster cells
+constexpr double kFarVoidCells = 128.0;     // beyond: the guide's surface deep inside, tiles
+constexpr double kTensionFrom = 64.0;       // farthest void cell from data: no tension below
+constexpr double kTensionFull = 256.0;      // full tension above
+// The tensioned surface costs more than the plain one (a padded lattice) and,
+// on a small raster, the time its largest field waits for the guide: a void
+// that would take less than 1 % of it (farthest cell within ~9 cells of
+// kTensionFrom) keeps the plain surface.
+constexpr double kMinTensionWeight = 0.01;
+
+double far_void_weight(double farthest) {
+  const double ramp = std::clamp((farthest - kTensionFrom) / (kTensionFull - kTensionFrom), 0.0, 1.0);
+  const double weight = ramp * ramp * (3.0 - 2.0 * ramp);
+  return weight < kMinTensionWeight ? 0.0 : weight;
+}
+
+bool reaches_far(double farthest) { return farthest > kFarVoidCells; }
+
+namespace {
+// The full tension (ThinPlateSchedule::tension) on a lattice of `stride` cells.
+double full_tension(int stride) {
+  const double reach = kSlopeReach / stride;  // in lattice cells
+  return 1.0 / (reach * reach);
+}
+}  // namespace
+
+std::vector<double> CoarseGuide::far_void_weights() const {
+  const std::vector<double> dist = distance_to_valid(known_.data(), cw_, ch_);
+  std::vector<double> weight(known_.size(), 0.0);
+  std::vector<std::uint8_t> seen(known_);
+  std::vector<std::size_t> component, stack;
+  for (std::size_t start = 0; start < seen.size(); ++start) {
+    if (seen[start]) continue;
+    // The unknown points 8-connected to `start`, and the farthest of them from data.
+    component.clear();
+    stack.assign(1, start);
+    seen[start] = 1;
+    double farthest = 0.0;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      component.push_back(i);
+      farthest = std::max(farthest, dist[i] * stride_);
+      const int x = static_cast<int>(i % cw_), y = static_cast<int>(i / cw_);
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= cw_ || ny >= ch_) continue;
+          const std::size_t n = static_cast<std::size_t>(ny) * cw_ + nx;
+          if (!seen[n]) {
+            seen[n] = 1;
+            stack.push_back(n);
+          }
+        }
+    }
+    const double w = far_void_weight(farthest);
+    for (std::size_t i : component) weight[i] = w;
+  }
+  return weight;
+}
+
+void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, double tension, const ProgressFn& progress) const {
+  if (params.method != Method::mcmd) return fill_grid(g, params, progress);
+  ThinPlateSchedule schedule;
+  schedule.tension = tension;
+  thin_plate_fill_scheduled(g, params, schedule, progress);
+}
+
+std::vector<double> CoarseGuide::filled(const std::vector<double>& start, double tension, const FillParams& params,
+                                        const ProgressFn& progress) const {
+  std::vector<double> out = start;
+  if (params.method == Method::mcmd && tension == 0) {
+    // The lattice as it is, no 2^m+1 padding (a 676×301 lattice padded to
+    // 1025² was 5× the work; a 301² one to 513², with -rs auto, half the
+    // guide's time). Not under tension: across a void reaching the
+    // raster's edge, the mirror (a level surface there) is what stops a
+    // coast's slope, which a free edge under tension did not (2.2 km too
+    // high in HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains).
+    std::vector<CellState> state(out.size());
+    for (std::size_t i = 0; i < state.size(); ++i) state[i] = known_[i] ? CellState::known : CellState::unknown;
+    thin_plate_with_roughness(FieldView{cw_, ch_, out.data(), state.data()}, 0, 0, params, ThinPlateSchedule{},
+                              progress);
+    return out;
+  }
+  Grid g = mirror_padded_grid(start.data(), known_.data(), cw_, ch_, levels_to_cover(cw_, ch_));
+  fill_lattice(g, params, tension, progress);
+  for (int j = 0; j < ch_; ++j)
+    for (int i = 0; i < cw_; ++i) out[static_cast<std::size_t>(j) * cw_ + i] = g.z(i, j);
+  return out;
+}
+
+std::vector<double> CoarseGuide::plain_and_tense(const std::vector<double>& mean, const FillParams& params,
+                                                 const ProgressFn& progress, int threads) {
+  const double tension = full_tension(stride_);
+  if (threads <= 1) {
+    value_ = filled(mean, 0.0, params, sub_progress(progress, 0.0, 0.3));
+    return filled(mean, tension, params, sub_progress(progress, 0.3, 1.0));
+  }
+  // The tensioned solve (the larger: a padded lattice) on a helper thread,
+  // which stops when this one is cancelled; progress is this thread's.
+  std::atomic<bool> stop{false};
+  std::vector<double> tense;
+  std::exception_ptr failed;
+  std::thread helper([&] {
+    try {
+      tense = filled(mean, tension, params, [&stop](double) { return !stop.load(std::memory_order_relaxed); });
+    } catch (...) {
+      failed = std::current_exception();
+    }
+  });
+  try {
+    value_ = filled(mean, 0.0, params, sub_progress(progress, 0.0, 0.9));
+  } catch (...) {
+    stop = true;
+    helper.join();
+    throw;
+  }
+  helper.join();
+  if (failed) std::rethrow_exception(failed);
+  report(progress, 1.0);
+  return tense;
+}
+
+bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress, int threads) {
+  std::vector<double> mean(moments_.size(), 0.0);
+  std::vector<std::uint8_t> known(moments_.size(), 0);
+  std::size_t known_count = 0;
+  for (std::size_t i = 0; i < moments_.size(); ++i) {
+    const Moments& m = moments_[i];
+    if (m.n == 0) continue;
+    mean[i] = m.n == 1 ? m.z : plane_at_lattice(m.n, m.z, m.x, m.y, m.xx, m.yy, m.xy, m.zx, m.zy, stride_);
+    known[i] = 1;
+    ++known_count;
+  }
+  moments_ = {};
+  known_ = known;
+  if (known_count == 0) return false;
+  value_ = mean;
+  if (known_count < value_.size()) {
+    const std::vector<double> weight =
+        params.method == Method::mcmd ? far_void_weights() : std::vector<double>(value_.size(), 0.0);
+    const bool far = std::any_of(weight.begin(), weight.end(), [](double w) { return w > 0; });
+    if (!far) {
+      value_ = filled(mean, 0.0, params, progress);
+    } else {
+      // Each void's blend of the two surfaces: one weight per void, so the
+      // fill stays as smooth as either inside it, and both agree with the
+      // known points around it.
+      const std::vector<double> tense = plain_and_tense(mean, params, progress, threads);
+      for (std::size_t i = 0; i < value_.size(); ++i) value_[i] += weight[i] * (tense[i] - value_[i]);
+    }
+  }
+  ready_ = true;
+  return true;
+}
+
+namespace {
+// Catmull-Rom weights for the 4 lattice points around fraction f in [0, 1).
+void catmull_rom(double f, double w[4]) {
+  const double f2 = f * f, f3 = f2 * f;
+  w[0] = 0.5 * (-f3 + 2.0 * f2 - f);
+  w[1] = 0.5 * (3.0 * f3 - 5.0 * f2 + 2.0);
+  w[2] = 0.5 * (-3.0 * f3 + 4.0 * f2 + f);
+  w[3] = 0.5 * (f3 - f2);
+}
+}  // namespace
+
+double CoarseGuide::at(long long x, long long y) const {
+  const long long rx = reflect_index(x, width_);
+  const long long ry = reflect_index(y, height_);
+  const long long ix = rx / stride_, iy = ry / stride_;
+  const double fx = static_cast<double>(rx - ix * stride_) / stride_;
+  const double fy = static_cast<double>(ry - iy * stride_) / stride_;
+  if (fx == 0.0 && fy == 0.0) return value_[static_cast<std::size_t>(iy) * cw_ + ix];
+  double wx[4], wy[4];
+  catmull_rom(fx, wx);
+  catmull_rom(fy, wy);
+  double total = 0.0;
+  for (int b = 0; b < 4; ++b) {
+    const std::size_t row = static_cast<std::size_t>(reflect_index(iy - 1 + b, ch_)) * cw_;
+    double acc = 0.0;
+    for (int a = 0; a < 4; ++a) acc += wx[a] * value_[row + reflect_index(ix - 1 + a, cw_)];
+    total += wy[b] * acc;
+  }
+  return total;
+}
+
+void CoarseGuide::prepare_distance() {
+  if (distance_.empty()) distance_ = distance_to_valid(known_.data(), cw_, ch_);
+}
+
+double CoarseGuide::coarse_distance(long long x, long long y) const {
+  const long long rx = reflect_index(x, width_), ry = reflect_index(y, height_);
+  const long long i = std::min<long long>((rx + stride_ / 2) / stride_, cw_ - 1);
+  const long long j = std::min<long long>((ry + stride_ / 2) / stride_, ch_ - 1);
+  return stride_ * distance_[static_cast<std::size_t>(j) * cw_ + i];
+}
+
+}  // namespace mcmd

@@ -1,0 +1,47 @@
+// Small voids solved alone (internal to the tiled fill; docs/tiling.md,
+// "Small voids"). A small component's discrete thin-plate problem depends only
+// on the known cells within 2 cells of it, so it is solved in its own 2^k+1
+// grid whose size and place depend only on the component's bounding box: any
+// run builds the identical grid and gets identical values, whatever the tile
+// layout around it, so the component needs neither windows nor blending.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "raster/coarse_guide.hpp"
+#include "common/grid.hpp"
+#include "mcmd/params.hpp"
+#include "mcmd/progress.hpp"
+#include "raster/tiles/tile_layout.hpp"
+#include "raster/tiles/tile_window.hpp"
+#include "raster/void_components.hpp"
+
+namespace mcmd::detail {
+
+// Cells kept around a component's bounding box, at least, on every side:
+// kSmallVoidMargin + extent / kSmallVoidMarginDivisor (extent: the box's longer side).
+constexpr int kSmallVoidMargin = 8;
+constexpr int kSmallVoidMarginDivisor = 8;
+int small_void_margin(int extent);
+
+// The largest bounding-box side solved alone: its grid is never larger than
+// a window of the layout. Below 1: no component is solved alone.
+int max_small_extent(const TileLayout& layout);
+
+struct ComponentGrid {
+  int levels = 0;
+  int ox = 0, oy = 0;  // global raster coordinates of grid cell (0, 0)
+  ReadRect rect;       // raster cells the grid needs (reflected into the raster)
+};
+ComponentGrid component_grid(const Box& box, int width, int height);
+
+// Fill the component (its grid read as `z`/`valid` over g.rect). Other void
+// cells of the grid, and component cells farther than `radius` from every
+// known cell, are pinned to the guide. Returns the values of the component's
+// cells, run after run.
+std::vector<double> solve_component(const SmallComponent& c, const ComponentGrid& g, int width, int height,
+                                    const double* z, const std::uint8_t* valid, const CoarseGuide& guide,
+                                    double radius, const FillParams& params, const ProgressFn& progress);
+
+}  // namespace mcmd::detail

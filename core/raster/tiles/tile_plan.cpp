@@ -1,0 +1,101 @@
+#include "raster/tiles/tile_plan.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+
+#include "mcmd/fill_raster.hpp"
+#include "raster/tiles/lone_void.hpp"
+#include "raster/tiles/tile_scan.hpp"
+
+namespace mcmd::detail {
+
+void RunIndex::build(const std::vector<SmallComponent>& small, int height) {
+  for (const auto& c : small) runs_.insert(runs_.end(), c.runs.begin(), c.runs.end());
+  std::sort(runs_.begin(), runs_.end(),
+            [](const VoidRun& a, const VoidRun& b) { return a.y != b.y ? a.y < b.y : a.x0 < b.x0; });
+  row_start_.assign(static_cast<std::size_t>(height) + 1, 0);
+  for (const auto& r : runs_) ++row_start_[static_cast<std::size_t>(r.y) + 1];
+  for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) row_start_[y + 1] += row_start_[y];
+}
+
+void RunIndex::mask(WindowResult& r) const {
+  if (runs_.empty()) return;
+  const int rw = r.xs.size();
+  for (int y = r.ys.begin; y < r.ys.end; ++y)
+    for (std::size_t k = row_start_[y]; k < row_start_[y + 1]; ++k) {
+      const int b = std::max(runs_[k].x0, r.xs.begin), e = std::min(runs_[k].x1, r.xs.end);
+      for (int x = b; x < e; ++x) r.write[static_cast<std::size_t>(y - r.ys.begin) * rw + (x - r.xs.begin)] = 0;
+    }
+}
+
+namespace {
+
+// Only tiles whose output region meets a large component's box need a window.
+void needs_of_large(const TileLayout& layout, const std::vector<Box>& large, std::vector<std::uint8_t>& needs) {
+  std::fill(needs.begin(), needs.end(), 0);
+  for (const Box& b : large)
+    for (int ty = 0; ty < layout.y.count(); ++ty) {
+      const Range ry = layout.y.region(ty);
+      if (ry.end <= b.y0 || ry.begin > b.y1) continue;
+      for (int tx = 0; tx < layout.x.count(); ++tx) {
+        const Range rx = layout.x.region(tx);
+        if (rx.end > b.x0 && rx.begin <= b.x1) needs[static_cast<std::size_t>(ty) * layout.x.count() + tx] = 1;
+      }
+    }
+}
+
+}  // namespace
+
+bool plan_tiles(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
+                const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan) {
+  plan.layout = TileLayout(raster.width, raster.height,
+                           effective_tile_side(raster.width, raster.height, tiling.tile_side));
+  const TileLayout& layout = plan.layout;
+  plan.single = layout.tile_count() == 1;
+  if (!plan.single) plan.guide = CoarseGuide(raster.width, raster.height, guide_stride(raster.width, raster.height));
+  stats.tile_side = layout.tile_side();
+  stats.tiles_x = layout.x.count();
+  stats.tiles_y = layout.y.count();
+
+  // Small void components are solved alone (docs/tiling.md, "Small voids"):
+  // the default method only, with a guide (several tiles), without -md.
+  const int small_extent = max_small_extent(layout);
+  std::optional<ComponentFinder> finder;
+  if (!plan.single && params.method == Method::mcmd && tiling.max_distance == 0 && small_extent >= 1)
+    finder.emplace(raster.width, small_extent);
+  ScanResult scan = scan_raster(raster, layout, plan.single ? nullptr : &plan.guide, sub_progress(progress, 0.0, 2.0 / 3),
+                                finder ? &*finder : nullptr);
+  if (finder) {
+    finder->finish();
+    if (finder->overflow()) finder.reset();
+  }
+  stats.void_cells = scan.voids;
+  stats.known_cells = scan.known;
+  if (scan.voids == 0) return false;
+  if (scan.known == 0) throw std::invalid_argument("the raster has no known cell to fill from");
+
+  // One noise unit for every window, so displacement amplitudes agree across seams.
+  plan.params = params;
+  if (plan.params.noise_unit <= 0) plan.params.noise_unit = scan.hi - scan.lo;
+  if (!plan.single) {
+    plan.guide.solve(plan.params, sub_progress(progress, 2.0 / 3, 1.0), effective_threads(tiling.threads));
+    stats.guide_stride = plan.guide.stride();
+    if (tiling.max_distance > exact_distance_limit(layout)) plan.guide.prepare_distance();
+  }
+  const bool guided = !plan.single && plan.guide.ready();
+  if (finder && guided) {
+    plan.small = std::move(finder->small());
+    plan.small_runs.build(plan.small, raster.height);
+    needs_of_large(layout, finder->large(), scan.needs);
+  }
+  for (std::size_t c = 0; c < plan.small.size(); ++c) plan.jobs.push_back(Job{true, c});
+  for (std::size_t t = 0; t < scan.needs.size(); ++t)
+    if (scan.needs[t]) plan.jobs.push_back(Job{false, t});
+  stats.windows_solved = plan.jobs.size() - plan.small.size();
+  stats.small_components = plan.small.size();
+  plan.radius = guided ? guide_radius(layout, plan.guide) : 0.0;
+  return true;
+}
+
+}  // namespace mcmd::detail

@@ -1,0 +1,56 @@
+// What the tiled fill will do, decided by one streaming pass (internal to
+// tiles/tiled_fill.cpp): the tile layout, the coarse guide, the small void
+// components solved alone and the list of jobs.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "mcmd/params.hpp"
+#include "mcmd/progress.hpp"
+#include "mcmd/raster_access.hpp"
+#include "raster/coarse_guide.hpp"
+#include "raster/tiles/tile_layout.hpp"
+#include "raster/tiles/tile_window.hpp"
+#include "raster/void_components.hpp"
+
+namespace mcmd::detail {
+
+// A job: a small void component solved alone, or a tile's window.
+struct Job {
+  bool component = false;
+  std::size_t index = 0;  // into TilePlan::small, or a tile (row-major)
+};
+
+// The runs of the small components, by row, to keep windows off their cells.
+class RunIndex {
+ public:
+  void build(const std::vector<SmallComponent>& small, int height);
+  // Clear the write flags of a window result on small components' cells.
+  void mask(WindowResult& r) const;
+
+ private:
+  std::vector<VoidRun> runs_;            // sorted by (y, x0)
+  std::vector<std::size_t> row_start_;   // height + 1
+};
+
+struct TilePlan {
+  TileLayout layout;
+  bool single = false;  // one tile: its window holds the whole raster, no guide
+  CoarseGuide guide;    // solved, unless single
+  FillParams params;    // the caller's, with the raster's noise unit
+  double radius = 0.0;  // guide radius (tile_window.hpp); 0 without a guide
+  std::vector<SmallComponent> small;  // solved alone (lone_void.hpp)
+  RunIndex small_runs;
+  std::vector<Job> jobs;  // the small components in order of their first cell, then tiles row-major
+  const CoarseGuide* guide_or_null() const { return single ? nullptr : &guide; }
+};
+
+// Pass 1 (counts, guide sums, components, tiles holding voids), then the
+// guide's solve; progress over [0, 1]. Returns false when the raster has no
+// void (nothing to do). Fills stats' counts. Throws std::invalid_argument
+// when no cell is known, Cancelled.
+bool plan_tiles(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
+                const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan);
+
+}  // namespace mcmd::detail

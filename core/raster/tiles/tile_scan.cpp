@@ -1,0 +1,72 @@
+#include "raster/tiles/tile_scan.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace mcmd::detail {
+
+namespace {
+
+// The (at most two) tiles whose output region holds each cell of an axis.
+std::vector<std::array<int, 2>> covering_tiles(const TileAxis& axis) {
+  std::vector<std::array<int, 2>> c(static_cast<std::size_t>(axis.length()), {-1, -1});
+  for (int t = 0; t < axis.count(); ++t) {
+    const Range r = axis.region(t);
+    for (int x = r.begin; x < r.end; ++x) (c[x][0] < 0 ? c[x][0] : c[x][1]) = t;
+  }
+  return c;
+}
+
+}  // namespace
+
+ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, CoarseGuide* guide,
+                       const ProgressFn& progress, ComponentFinder* components) {
+  const int W = raster.width, H = raster.height;
+  const int nx = layout.x.count();
+  const int chunk = std::clamp((1 << 20) / W, 1, H);
+  std::vector<double> z(static_cast<std::size_t>(W) * chunk);
+  std::vector<std::uint8_t> valid(z.size());
+  const auto cx = covering_tiles(layout.x);
+  const auto cy = covering_tiles(layout.y);
+
+  ScanResult s;
+  s.lo = std::numeric_limits<double>::infinity();
+  s.hi = -s.lo;
+  s.needs.assign(layout.tile_count(), 0);
+  std::vector<std::uint8_t> row_void(static_cast<std::size_t>(nx));
+  for (int y0 = 0; y0 < H; y0 += chunk) {
+    const int rows = std::min(chunk, H - y0);
+    raster.read(0, y0, W, rows, z.data(), valid.data());
+    if (guide) guide->add_rows(y0, rows, z.data(), valid.data());
+    for (int r = 0; r < rows; ++r) {
+      const double* zr = z.data() + static_cast<std::size_t>(r) * W;
+      const std::uint8_t* vr = valid.data() + static_cast<std::size_t>(r) * W;
+      std::fill(row_void.begin(), row_void.end(), 0);
+      std::size_t known = 0;
+      for (int x = 0; x < W; ++x) {
+        if (vr[x]) {
+          ++known;
+          s.lo = std::min(s.lo, zr[x]);
+          s.hi = std::max(s.hi, zr[x]);
+        } else {
+          row_void[cx[x][0]] = 1;
+          if (cx[x][1] >= 0) row_void[cx[x][1]] = 1;
+        }
+      }
+      if (components) components->add_row(y0 + r, vr);
+      s.known += known;
+      s.voids += static_cast<std::size_t>(W) - known;
+      if (known == static_cast<std::size_t>(W)) continue;
+      for (int ty : cy[y0 + r]) {
+        if (ty < 0) continue;
+        std::uint8_t* need = s.needs.data() + static_cast<std::size_t>(ty) * nx;
+        for (int tx = 0; tx < nx; ++tx) need[tx] |= row_void[tx];
+      }
+    }
+    report(progress, static_cast<double>(y0 + rows) / H);
+  }
+  return s;
+}
+
+}  // namespace mcmd::detail

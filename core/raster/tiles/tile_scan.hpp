@@ -1,0 +1,30 @@
+// Pass 1 of the tiled fill (internal): one streaming read of the raster.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "raster/coarse_guide.hpp"
+#include "mcmd/progress.hpp"
+#include "raster/tiles/tile_layout.hpp"
+#include "mcmd/raster_access.hpp"
+#include "raster/void_components.hpp"
+
+namespace mcmd::detail {
+
+struct ScanResult {
+  std::size_t known = 0;
+  std::size_t voids = 0;
+  double lo = 0.0;  // known elevation range (lo > hi when no cell is known)
+  double hi = -1.0;
+  std::vector<std::uint8_t> needs;  // per tile, row-major: a void lies in its output region
+};
+
+// Read the raster in full-width row blocks of about a million cells, count
+// known and void cells, feed `guide` and `components` (either may be null),
+// mark the tiles to solve.
+ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, CoarseGuide* guide,
+                       const ProgressFn& progress, ComponentFinder* components = nullptr);
+
+}  // namespace mcmd::detail

@@ -1,0 +1,34 @@
+// The small-raster path of the raster engine (docs/tiling.md, "Small
+// rasters"). Tiles exist to bound memory: a raster of at most
+// kWholeRasterMaxCells cells is read whole once, each void component is
+// solved once in a field around it (void_field.hpp) instead of in ~4
+// overlapping windows, and the raster is written once at the end. A raster
+// that is one big void (3.3 % kept) is one field.
+#pragma once
+
+#include <cstddef>
+
+#include "mcmd/params.hpp"
+#include "mcmd/progress.hpp"
+#include "mcmd/raster_access.hpp"
+
+namespace mcmd::detail {
+
+// 2^21 cells (e.g. 1448²): about 250 MB at the solver's ~120 bytes per cell,
+// the peak of the tiled fill on large rasters.
+constexpr std::size_t kWholeRasterMaxCells = std::size_t{1} << 21;
+
+// Unknown cells farther than kGuideRadiusStrides · stride from data are pinned
+// to a coarse guide of this stride at least (the tiles' stride when larger).
+constexpr int kMinGuideStride = 4;
+
+// Fills `raster` whole: one read, one solve per void component, one write of
+// the void cells (within max_distance of a known cell when that is > 0,
+// measured exactly). When a void cell lies so far from data that the coarse
+// guide's tension is needed (reaches_far), nothing is written by this path:
+// the raster, as read, goes to the tiles (tiles/tiled_fill.hpp).
+// Pre: fills_whole(width, height, params, tiling). Throws as fill_raster.
+void fill_whole_raster(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
+                       const ProgressFn& progress, const RasterFillHooks& hooks);
+
+}  // namespace mcmd::detail
