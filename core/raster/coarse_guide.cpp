@@ -10,7 +10,7 @@
 
 #include "common/distance.hpp"
 #include "common/padding.hpp"
-#include "thin_plate/schedule.hpp"
+#include "thin_plate/thin_plate.hpp"
 
 namespace mcmd {
 

@@ -5,7 +5,7 @@
 #include <cstddef>
 
 #include "common/distance.hpp"
-#include "thin_plate/schedule.hpp"
+#include "thin_plate/thin_plate.hpp"
 #include "common/zero_runs.hpp"
 
 namespace mcmd::detail {

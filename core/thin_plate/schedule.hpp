@@ -1,13 +1,9 @@
-// The tunable schedule of the default method, for tests and benchmarks; the
-// defaults are the measured choice (docs/default-method.md).
+// The tunable schedule of the default method (thin_plate.hpp), for tests and
+// benchmarks; the defaults are the measured choice (docs/default-method.md).
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 
-#include "common/grid.hpp"
-#include "mcmd/params.hpp"
-#include "mcmd/progress.hpp"
 #include "thin_plate/multigrid.hpp"
 
 namespace mcmd {
@@ -45,44 +41,5 @@ struct ThinPlateSchedule {
   double pull_length = 8.0;
   VCycleSchedule vcycle{};
 };
-
-// A w×h row-major field filled in place by the smooth thin-plate method: cells
-// whose state is a constraint (known, ridge, river) are kept, unknown cells
-// get the fill. Any size (no 2^n+1 padding: lattice.hpp).
-struct FieldView {
-  int w = 0;
-  int h = 0;
-  double* z = nullptr;
-  const CellState* state = nullptr;
-  // A bound on the distance from any unknown cell to the nearest constraint
-  // cell, when the caller has one (< 0: the solver measures it when it needs
-  // it). The field is taken as shallow when it is <= shallow_reach, as not
-  // shallow otherwise: a loose bound only costs speed. -rs auto makes no
-  // noise octave coarser than it (roughness.hpp).
-  double farthest = -1.0;
-  // The unknown cells whose values the caller keeps, one byte per cell (null:
-  // all of them). A void's field solves other voids' cells too; the roughness
-  // is generated around the kept ones only (roughness.hpp).
-  const std::uint8_t* wanted = nullptr;
-  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
-  double& z_at(int x, int y) const { return z[index(x, y)]; }
-  CellState state_at(int x, int y) const { return state[index(x, y)]; }
-};
-
-// The smooth fill of `field` (stages 1-3 of thin_plate.cpp, no roughness).
-// Pre: field.z and field.state hold w·h cells. Post: constraint cells
-// unchanged; unknown cells filled when the field has a constraint.
-void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule, const ProgressFn& progress = {});
-
-// thin_plate_smooth plus the roughness of `params` (roughness.hpp) in the
-// same solve; the noise is keyed on raster coordinates, the field's cell
-// (0, 0) being raster cell (x0, y0). Pre/post as thin_plate_smooth; with no
-// roughness, it is that.
-void thin_plate_with_roughness(const FieldView& field, long long x0, long long y0, const FillParams& params,
-                               const ThinPlateSchedule& schedule, const ProgressFn& progress = {});
-
-// thin_plate_fill with an explicit schedule; noise (rs, rs_auto) included.
-void thin_plate_fill_scheduled(Grid& grid, const FillParams& params, const ThinPlateSchedule& schedule,
-                               const ProgressFn& progress = {});
 
 }  // namespace mcmd

@@ -23,15 +23,15 @@
 //     data), on the thin-plate energy plus a weak pull towards the
 //     cascade's fill: on large blob voids the plain converged thin plate
 //     extends the rim's slopes too far (docs/default-method.md).
-//  4. Roughness (roughness.cpp): with rs > 0 or rs auto, a constrained
-//     fractal correction is added to the smooth fill.
+//  4. Roughness (roughness/): with rs > 0 or rs auto, a constrained
+//     fractal correction is added to the smooth fill in the same solve.
 //
 // The thin-plate energy keeps only the second differences that fit in the grid
 // (natural boundary), so voids at the border stay bounded. Work runs over the
 // runs of free cells only, so a raster with few voids is cheap. Everything is
 // computed relative to the least-squares plane of the constraints (exact on
-// planes, translation invariance, conditioning), single-threaded and in a
-// fixed order (deterministic).
+// planes, translation invariance, conditioning), in a fixed order: the same
+// bits for any thread count (large lattices run in bands, lattice.hpp).
 #include "thin_plate/thin_plate.hpp"
 
 #include <algorithm>
@@ -47,7 +47,6 @@
 #include "thin_plate/multigrid.hpp"
 #include "thin_plate/pull_push.hpp"
 #include "roughness/roughness.hpp"
-#include "thin_plate/schedule.hpp"
 
 namespace mcmd {
 

@@ -1,0 +1,250 @@
+#include "roughness/octaves.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "roughness/noise.hpp"
+#include "roughness/simd.hpp"
+
+namespace mcmd::rough {
+
+namespace {
+
+constexpr double kGolden = 2.399963229728653;  // golden angle, radians
+
+// Catmull-Rom weights of the 4 nodes around a point at fraction t.
+template <class T>
+[[gnu::always_inline]] inline void catmull_rom_weights(T t, T w[4]) {
+  const T t2 = t * t, t3 = t2 * t;
+  w[0] = 0.5 * (-t + 2.0 * t2 - t3);
+  w[1] = 0.5 * (2.0 - 5.0 * t2 + 3.0 * t3);
+  w[2] = 0.5 * (t + 4.0 * t2 - 3.0 * t3);
+  w[3] = 0.5 * (t3 - t2);
+}
+
+// Σ_r wv[r] Σ_a wu[a] node(r, a): the spline from its 4×4 nodes.
+template <class T, class Node>
+[[gnu::always_inline]] inline T bicubic(const T wu[4], const T wv[4], const Node& node) {
+  T sum{};
+  for (int r = 0; r < 4; ++r)
+    sum += wv[r] * (wu[0] * node(r, 0) + wu[1] * node(r, 1) + wu[2] * node(r, 2) + wu[3] * node(r, 3));
+  return sum;
+}
+
+// Octaves of spacing 2^j >= 2^kSampledFrom are smooth at the scale of a
+// cell: their splines are evaluated at the cells of even raster coordinates
+// only, and the others interpolated between those with the 4-point cubic
+// (-1, 9, 9, -1)/16, once along rows, then along columns (a quarter of the
+// evaluations; the spline's detail at 8 cells is 4 samples wide).
+constexpr int kSampledFrom = 3;
+
+long long floor_half(long long v) { return v >= 0 ? v / 2 : -((1 - v) / 2); }  // floor(v / 2)
+
+// The 4-point cubic midway between b and c (a, d: their outer neighbours).
+double cubic_mid(double a, double b, double c, double d) { return (9.0 * (b + c) - (a + d)) / 16.0; }
+
+// The cells an octave is added to: raster rectangle [gx0, gx1) × [gy0, gy1),
+// row-major in `out` (`stride` apart), where `mask` is set.
+struct OctaveCells {
+  long long gx0, gx1, gy0, gy1;
+  const std::uint8_t* mask;
+  double* out;
+  int stride;
+  int width() const { return static_cast<int>(gx1 - gx0); }
+  const std::uint8_t* mask_row(long long gy) const { return mask + (gy - gy0) * stride; }
+  double* out_row(long long gy) const { return out + (gy - gy0) * stride; }
+};
+
+// Samples k0 .. k1 - 1 (at raster coordinates 2k) that the cubic needs for
+// cells v0 .. v1 - 1: 3 cells beyond each end.
+struct SampleRange {
+  long long k0, k1;
+};
+SampleRange samples_for(long long v0, long long v1) { return {floor_half(v0 - 3), floor_half(v1 + 2) + 1}; }
+
+// weight × the spline added at each masked cell, evaluated there;
+// spline_row(x0, y, n, wanted, to) evaluates n points of row y from x0.
+template <class SplineRow>
+[[gnu::always_inline]] inline void add_evaluated(const OctaveCells& c, double weight, const SplineRow& spline_row,
+                                                 std::vector<double>& scratch) {
+  const int w = c.width();
+  scratch.resize(static_cast<std::size_t>(w));
+  for (long long gy = c.gy0; gy < c.gy1; ++gy) {
+    const std::uint8_t* m = c.mask_row(gy);
+    double* o = c.out_row(gy);
+    spline_row(static_cast<double>(c.gx0), static_cast<double>(gy), w, m, scratch.data());
+    for (int i = 0; i < w; ++i)
+      if (m[i]) o[i] += weight * scratch[i];
+  }
+}
+
+// weight × the spline added at each masked cell, interpolated from its
+// samples at even raster coordinates: each row of samples (spline_row with
+// a step of 2) at every cell of the rectangle's width, then the cells of
+// each row from those rows.
+template <class SplineRow>
+[[gnu::always_inline]] inline void add_interpolated(const OctaveCells& c, double weight, const SplineRow& spline_row,
+                                                    std::vector<double>& scratch) {
+  const int w = c.width();
+  const SampleRange sx = samples_for(c.gx0, c.gx1), sy = samples_for(c.gy0, c.gy1);
+  const int nsx = static_cast<int>(sx.k1 - sx.k0), nsy = static_cast<int>(sy.k1 - sy.k0);
+  scratch.resize(static_cast<std::size_t>(nsy) * (nsx + w));
+  double* sample = scratch.data();
+  double* across = sample + static_cast<std::size_t>(nsy) * nsx;  // nsy rows of w
+  for (int r = 0; r < nsy; ++r) {
+    double* srow = sample + static_cast<std::size_t>(r) * nsx;
+    spline_row(2.0 * sx.k0, 2.0 * (sy.k0 + r), nsx, nullptr, srow);
+    double* arow = across + static_cast<std::size_t>(r) * w;
+    for (int i = 0; i < w; ++i) {
+      const long long gx = c.gx0 + i;
+      const long long k = floor_half(gx) - sx.k0;  // the sample at or left of gx
+      arow[i] = (gx & 1) == 0 ? srow[k] : cubic_mid(srow[k - 1], srow[k], srow[k + 1], srow[k + 2]);
+    }
+  }
+  for (long long gy = c.gy0; gy < c.gy1; ++gy) {
+    const std::uint8_t* m = c.mask_row(gy);
+    double* o = c.out_row(gy);
+    const double* a1 = across + static_cast<std::size_t>(floor_half(gy) - sy.k0) * w;
+    for (int i = 0; i < w; ++i) {
+      if (!m[i]) continue;
+      const double v = (gy & 1) == 0 ? a1[i] : cubic_mid(a1[i - w], a1[i], a1[i + w], a1[i + 2 * w]);
+      o[i] += weight * v;
+    }
+  }
+}
+
+// One octave's noise, times `weight`, added to `cells`: white noise on a
+// lattice of spacing 2^j rotated by j golden angles, interpolated with
+// Catmull-Rom splines. The nodes are a function of global coordinates, so any
+// window, field or block sees the same value at a cell (the sampled octaves'
+// samples too: even raster coordinates). The AVX2 clone takes 4 cells per
+// instruction where the baseline takes 2: the noise's time on White Mountains
+// blobs fell by 16 % (the nodes' loads stay one by one). `node` and `scratch`
+// are buffers reused by the caller.
+MCMD_AVX2_CLONES
+void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cells, std::vector<double>& node,
+                std::vector<double>& scratch) {
+  const double s = std::ldexp(1.0, j);
+  const double c = std::cos(j * kGolden) / s, sn = std::sin(j * kGolden) / s;
+  const double ox = 0.618 * j, oy = 0.382 * j;
+  // (u, v) of cells at x (one or a Quad), y.
+  const auto uv = [&](auto x, double y, auto& u, auto& v) {
+    u = c * x + sn * y + ox;
+    v = -sn * x + c * y + oy;
+  };
+  const UniformHash hash(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1));
+  if (j == 0) {  // unrotated, unit spacing: every cell is a node, the spline its value
+    for (long long gy = cells.gy0; gy < cells.gy1; ++gy)
+      for (long long gx = cells.gx0; gx < cells.gx1; ++gx)
+        if (cells.mask_row(gy)[gx - cells.gx0])
+          cells.out_row(gy)[gx - cells.gx0] += weight * (std::sqrt(3.0) * hash(gx, gy));
+    return;
+  }
+  // The points where the spline is evaluated: the cells, or their samples.
+  const bool sampled = j >= kSampledFrom;
+  const int step = sampled ? 2 : 1;
+  const SampleRange sx = sampled ? samples_for(cells.gx0, cells.gx1) : SampleRange{cells.gx0, cells.gx1};
+  const SampleRange sy = sampled ? samples_for(cells.gy0, cells.gy1) : SampleRange{cells.gy0, cells.gy1};
+  // Node box covering the corners in (u, v).
+  double umin = 1e300, umax = -1e300, vmin = 1e300, vmax = -1e300;
+  for (long long cx : {sx.k0 * step, (sx.k1 - 1) * step})
+    for (long long cy : {sy.k0 * step, (sy.k1 - 1) * step}) {
+      double u, v;
+      uv(static_cast<double>(cx), static_cast<double>(cy), u, v);
+      umin = std::min(umin, u); umax = std::max(umax, u);
+      vmin = std::min(vmin, v); vmax = std::max(vmax, v);
+    }
+  const long long i0 = static_cast<long long>(std::floor(umin)) - 1;
+  const long long j0 = static_cast<long long>(std::floor(vmin)) - 1;
+  const int nu = static_cast<int>(std::floor(umax) - i0) + 3, nv = static_cast<int>(std::floor(vmax) - j0) + 3;
+  node.resize(static_cast<std::size_t>(nu) * nv);
+  for (int b = 0; b < nv; ++b)
+    for (int a = 0; a < nu; ++a) node[static_cast<std::size_t>(b) * nu + a] = std::sqrt(3.0) * hash(i0 + a, j0 + b);
+  // A point's (u, v), the origin of its 4×4 nodes in `node`, and its weights.
+  const auto locate = [&](auto x, double y, auto& first_node, auto wu, auto wv) {
+    decltype(x) u, v;
+    uv(x, y, u, v);
+    const auto fu = floor_of(u), fv = floor_of(v);
+    catmull_rom_weights(u - fu, wu);
+    catmull_rom_weights(v - fv, wv);
+    first_node = (fv - static_cast<double>(j0 + 1)) * nu + (fu - static_cast<double>(i0 + 1));  // exact: small integers
+  };
+  // The spline at points x0 + step·k, k < n, of row y, where `wanted` (null:
+  // all), into `to` (k-th entry; others untouched).
+  const auto spline_row = [&](double x0, double y, int n, const std::uint8_t* wanted, double* to)
+                              __attribute__((always_inline)) {
+    int k = 0;
+    for (; k + 3 < n; k += 4) {  // four points at a time
+      if (wanted) {
+        std::uint32_t any;
+        std::memcpy(&any, wanted + k, sizeof any);
+        if (!any) continue;
+      }
+      Quad first, wu[4], wv[4];
+      const double x = x0 + step * k;
+      locate(Quad{x, x + step, x + 2 * step, x + 3 * step}, y, first, wu, wv);
+      const QuadIndex at = __builtin_convertvector(first, QuadIndex);
+      const double* p0 = node.data() + at[0];
+      const double* p1 = node.data() + at[1];
+      const double* p2 = node.data() + at[2];
+      const double* p3 = node.data() + at[3];
+      const Quad sum = bicubic(wu, wv, [&](int r, int a) {
+        const int i = r * nu + a;
+        return Quad{p0[i], p1[i], p2[i], p3[i]};
+      });
+      for (int lane = 0; lane < 4; ++lane) to[k + lane] = sum[lane];
+    }
+    for (; k < n; ++k) {  // the last few
+      if (wanted && !wanted[k]) continue;
+      double first, wu[4], wv[4];
+      locate(x0 + step * k, y, first, wu, wv);
+      const double* p = node.data() + static_cast<long long>(first);
+      to[k] = bicubic(wu, wv, [&](int r, int a) { return p[r * nu + a]; });
+    }
+  };
+  if (sampled)
+    add_interpolated(cells, weight, spline_row, scratch);
+  else
+    add_evaluated(cells, weight, spline_row, scratch);
+}
+
+}  // namespace
+
+// The noise, octave j weighted 2^(jH), added to `out` (over area `a`) at the
+// cells of `mask`, block by block (active blocks only, over their noise box:
+// the coarse octaves' nodes cover the box), block rows on
+// `threads` threads (a lone field's noise, e.g. 3 % kept cells: each cell is
+// written by one block, the same bits for any count).
+void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const std::vector<std::uint8_t>& mask,
+               std::uint64_t seed, double H, int octaves, std::vector<double>& out, int threads) {
+#pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
+  for (int bj = 0; bj < blocks.ny; ++bj) {
+    std::vector<double> node, scratch;
+    for (int bi = 0; bi < blocks.nx; ++bi) {
+      if (!blocks.active(bi, bj)) continue;
+      const Rect& r = blocks.noise_box[blocks.index(bi, bj)];
+      for (int j = 0; j < octaves; ++j)
+        add_octave(seed, j, std::exp2(j * H),
+                   OctaveCells{g.x0 + r.x0, g.x0 + r.x1, g.y0 + r.y0, g.y0 + r.y1, mask.data() + a.index(r.x0, r.y0),
+                               out.data() + a.index(r.x0, r.y0), a.w},
+                   node, scratch);
+    }
+  }
+}
+
+// The octaves -rs auto makes for a field whose target cells all lie within
+// `depth` cells of a constraint (< 0: not known): those of spacing up to the
+// depth. A coarser octave is smooth across every void of the field, and the
+// conditioning on the constraints around it takes it out again (scattered
+// samples: 3 % kept cells lie within ~16 cells, spacings 16 and 32 go). On the
+// 42 benchmark cases RMSE median 0.9069 -> 0.9054 (kept3 0.8430 -> 0.8410),
+// Laplacian spread 0.967 unchanged; White Mountains kept3 s2 684 -> 594 ms CPU.
+int auto_octaves(double depth) {
+  if (depth < 0) return kOctaves;
+  int n = 1;
+  while (n < kOctaves && std::ldexp(1.0, n) <= depth) ++n;
+  return n;
+}
+
+}  // namespace mcmd::rough
