@@ -7,6 +7,14 @@
 
 namespace mcmd {
 
+// The maximum fill distance (-md, MAX_DISTANCE): a void cell is filled when
+// max_distance is 0 (no limit) or its Euclidean distance, in cells, to the
+// nearest known cell is at most max_distance. Every path of the raster
+// engine decides with this.
+inline bool within_fill_distance(double distance, double max_distance) {
+  return max_distance <= 0 || distance <= max_distance;
+}
+
 // Distance, in cells, from every cell of a row-major w×h raster to the nearest
 // cell with valid[i] != 0 (0 for valid cells). Exact, O(w·h) (Felzenszwalb &
 // Huttenlocher 2012). Every distance is +infinity when no cell is valid.

@@ -10,10 +10,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "paper/delta.hpp"
 #include "common/grid.hpp"
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
+#include "paper/delta.hpp"
 #include "paper/subdivision.hpp"
 
 namespace mcmd {

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "paper/mdbu.hpp"
-#include "roughness/noise.hpp"
 #include "paper/subdivision.hpp"
+#include "roughness/noise.hpp"
 
 namespace mcmd {
 

@@ -1,15 +1,15 @@
-#include "method/fill_grid.hpp"
 #include "raster/coarse_guide.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <atomic>
+#include <cmath>
 #include <exception>
 #include <stdexcept>
 #include <thread>
 
 #include "common/distance.hpp"
 #include "common/padding.hpp"
+#include "method/fill_grid.hpp"
 #include "thin_plate/thin_plate.hpp"
 
 namespace mcmd {

@@ -5,8 +5,8 @@
 #include <cstddef>
 
 #include "common/distance.hpp"
-#include "thin_plate/thin_plate.hpp"
 #include "common/zero_runs.hpp"
+#include "thin_plate/thin_plate.hpp"
 
 namespace mcmd::detail {
 
@@ -123,7 +123,7 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
     for (int x = run.x0; x < run.x1; ++x) {
       const std::size_t i = at(x, run.y);
       out.values.push_back(z[i]);
-      out.write.push_back(max_distance <= 0 || dist[i] <= max_distance ? 1 : 0);
+      out.write.push_back(within_fill_distance(need_dist ? dist[i] : 0.0, max_distance) ? 1 : 0);
     }
   return out;
 }

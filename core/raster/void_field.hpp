@@ -10,11 +10,10 @@
 #include <functional>
 #include <vector>
 
-#include "raster/coarse_guide.hpp"
 #include "common/grid.hpp"
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
-#include "mcmd/progress.hpp"
+#include "raster/coarse_guide.hpp"
 #include "raster/void_components.hpp"
 
 namespace mcmd::detail {

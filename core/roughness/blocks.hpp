@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "roughness/roughness.hpp"
+#include "roughness/field.hpp"
 
 namespace mcmd::rough {
 

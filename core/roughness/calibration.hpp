@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "roughness/blocks.hpp"
-#include "roughness/roughness.hpp"
 #include "roughness/statistics.hpp"
 
 namespace mcmd::rough {

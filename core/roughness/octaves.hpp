@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "roughness/blocks.hpp"
-#include "roughness/roughness.hpp"
+#include "roughness/field.hpp"
 
 namespace mcmd::rough {
 

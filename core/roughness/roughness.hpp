@@ -7,41 +7,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/grid.hpp"
 #include "mcmd/params.hpp"
-#include "mcmd/progress.hpp"
+#include "roughness/field.hpp"
 
 namespace mcmd {
-
-// A w×h part of a raster (row-major) whose cell (0, 0) is raster cell (x0, y0):
-// the noise is keyed on raster coordinates, so any window or field of a
-// raster sees the same noise. Unknown cells are the non-constraint ones; the
-// noise is made for those flagged in `wanted` (null: all of them). `depth`
-// bounds the distance from any unknown cell to a constraint (< 0: unknown).
-struct RoughField {
-  int w = 0, h = 0;
-  long long x0 = 0, y0 = 0;
-  const double* z = nullptr;
-  const CellState* state = nullptr;
-  const std::uint8_t* wanted = nullptr;
-  double depth = -1.0;
-  std::size_t cells() const { return static_cast<std::size_t>(w) * static_cast<std::size_t>(h); }
-  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
-  static RoughField of(const Grid& g) {
-    return RoughField{g.side(), g.side(), g.origin_x(), g.origin_y(), g.elevations().data(), g.states().data()};
-  }
-};
-
-// Terrain statistics from the constraint cells: semivariogram γ(d) over
-// horizontal and vertical pairs of constraint cells at lags 1, 2, 4, 8, 16.
-struct RoughnessModel {
-  double H = 0.5;         // Hurst exponent, from the slope of log γ against log d
-  double curvature = 0.0; // variance of a second difference: 8γ(1) - 2γ(2) from many lag-1
-                          // pairs, a calibrated fBm form γ(1)(8 - 2·4^H) from few (scattered samples)
-  bool valid = false;     // enough pairs to estimate
-};
-RoughnessModel estimate_roughness(const Grid& grid);
-RoughnessModel estimate_roughness(const RoughField& field);
 
 // A displacement over a box of a field (row-major, w wide), 0 outside it:
 // the noise lies near the voids, a small part of a void's field.

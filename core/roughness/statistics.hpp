@@ -6,8 +6,25 @@
 #include <algorithm>
 #include <vector>
 
+#include "common/grid.hpp"
 #include "roughness/blocks.hpp"
-#include "roughness/roughness.hpp"
+#include "roughness/field.hpp"
+
+namespace mcmd {
+
+// Terrain statistics from the constraint cells: semivariogram γ(d) over
+// horizontal and vertical pairs of constraint cells at lags 1, 2, 4, 8, 16.
+struct RoughnessModel {
+  double H = 0.5;         // Hurst exponent, from the slope of log γ against log d
+  double curvature = 0.0; // variance of a second difference: 8γ(1) - 2γ(2) from many lag-1
+                          // pairs, a calibrated fBm form γ(1)(8 - 2·4^H) from few (scattered samples)
+  bool valid = false;     // enough pairs to estimate
+};
+RoughnessModel estimate_roughness(const Grid& grid);
+RoughnessModel estimate_roughness(const RoughField& field);
+
+
+}  // namespace mcmd
 
 namespace mcmd::rough {
 

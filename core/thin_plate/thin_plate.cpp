@@ -40,13 +40,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/distance.hpp"
+#include "roughness/roughness.hpp"
 #include "thin_plate/biharmonic_relax.hpp"
 #include "thin_plate/cubic_prolong.hpp"
-#include "common/distance.hpp"
 #include "thin_plate/lattice.hpp"
 #include "thin_plate/multigrid.hpp"
 #include "thin_plate/pull_push.hpp"
-#include "roughness/roughness.hpp"
 
 namespace mcmd {
 

@@ -1,11 +1,10 @@
 // The coarse guide's tension is weighted per void (docs/tiling.md, "The
 // coarse guide"): a void reaching far from data levels off, while an
 // ordinary void in the same raster keeps the plain thin plate.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <gtest/gtest.h>
 #include <vector>
 
 #include "raster/coarse_guide.hpp"

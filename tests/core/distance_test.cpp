@@ -1,10 +1,9 @@
 // distance_to_valid against brute force: exact Euclidean distances on random
 // masks of odd shapes, and infinity where nothing is valid.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <gtest/gtest.h>
 #include <limits>
 #include <random>
 #include <vector>

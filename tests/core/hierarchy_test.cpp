@@ -3,7 +3,6 @@
 // tap, memchr, selects) must give the same values to the last bit, on odd and
 // even sizes (ghost cells), mostly pinned and mostly free lattices.
 #include <gtest/gtest.h>
-
 #include <limits>
 #include <random>
 #include <vector>

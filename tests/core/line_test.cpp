@@ -1,8 +1,7 @@
 // The 1D case: paper Fig. 4 (MD alone jumps at interior constraints) against
 // Fig. 6 (MDBU first: no jump).
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <vector>
 
 #include "paper/line.hpp"

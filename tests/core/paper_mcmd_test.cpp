@@ -1,13 +1,12 @@
 // The paper-exact methods (-method paper-ds / paper-te): MDBU + MD invariants.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <vector>
 
 #include "method/fill_grid.hpp"
-#include "paper/paper_fill.hpp"
 #include "paper/mdbu.hpp"
 #include "paper/midpoint_displacement.hpp"
+#include "paper/paper_fill.hpp"
 #include "test_terrain.hpp"
 
 using namespace mcmd;

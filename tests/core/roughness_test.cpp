@@ -1,11 +1,10 @@
 // -rs auto / rs > 0 for the default method: deterministic per seed, zero at
 // constraints, and roughness close to the terrain's on a synthetic fBm DEM.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <gtest/gtest.h>
 #include <numbers>
 #include <random>
 #include <stdexcept>
@@ -13,7 +12,8 @@
 
 #include "method/fill_grid.hpp"
 #include "roughness/roughness.hpp"
-#include "thin_plate/schedule.hpp"
+#include "roughness/statistics.hpp"
+#include "thin_plate/thin_plate.hpp"
 
 namespace {
 

@@ -1,14 +1,13 @@
 // The smooth thin-plate fill on fields of any size (no 2^n+1 padding): the
 // same guarantees as on 2^n+1 grids, and the same result on those.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 #include <vector>
 
 #include "thin_plate/lattice.hpp"
-#include "thin_plate/schedule.hpp"
+#include "thin_plate/thin_plate.hpp"
 
 namespace {
 

@@ -1,18 +1,16 @@
 // The default method (thin-plate MCMD): exactness, invariances, constraints
 // untouched, border voids bounded, and its building blocks.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <gtest/gtest.h>
 #include <random>
 
+#include "method/fill_grid.hpp"
 #include "thin_plate/biharmonic_relax.hpp"
 #include "thin_plate/cubic_prolong.hpp"
-#include "method/fill_grid.hpp"
 #include "thin_plate/multigrid.hpp"
 #include "thin_plate/thin_plate.hpp"
-#include "thin_plate/schedule.hpp"
 
 namespace {
 

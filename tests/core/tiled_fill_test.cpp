@@ -1,26 +1,25 @@
 // The tiled fill (docs/tiling.md): layout maths, completeness on odd raster
 // sizes, seams, large voids, determinism across threads and processing order,
 // cancellation and max distance — all through an in-memory RasterAccess.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <gtest/gtest.h>
 #include <limits>
 #include <numeric>
 #include <random>
 #include <vector>
 
-#include "method/fill_grid.hpp"
-#include "raster/coarse_guide.hpp"
 #include "common/distance.hpp"
 #include "common/padding.hpp"
+#include "mcmd/fill_raster.hpp"
+#include "method/fill_grid.hpp"
+#include "raster/coarse_guide.hpp"
 #include "raster/tiles/tile_layout.hpp"
 #include "raster/tiles/tile_window.hpp"
-#include "thin_plate/schedule.hpp"
-#include "mcmd/fill_raster.hpp"
 #include "test_terrain.hpp"
+#include "thin_plate/thin_plate.hpp"
 
 using namespace mcmd;
 

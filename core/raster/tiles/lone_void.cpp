@@ -1,4 +1,3 @@
-#include "method/fill_grid.hpp"
 #include "raster/tiles/lone_void.hpp"
 
 #include <algorithm>
@@ -6,6 +5,7 @@
 
 #include "common/distance.hpp"
 #include "common/padding.hpp"
+#include "method/fill_grid.hpp"
 
 namespace mcmd::detail {
 

@@ -9,10 +9,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "raster/coarse_guide.hpp"
 #include "common/grid.hpp"
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
+#include "raster/coarse_guide.hpp"
 #include "raster/tiles/tile_layout.hpp"
 #include "raster/tiles/tile_window.hpp"
 #include "raster/void_components.hpp"

@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "raster/coarse_guide.hpp"
 #include "mcmd/progress.hpp"
-#include "raster/tiles/tile_layout.hpp"
 #include "mcmd/raster_access.hpp"
+#include "raster/coarse_guide.hpp"
+#include "raster/tiles/tile_layout.hpp"
 #include "raster/void_components.hpp"
 
 namespace mcmd::detail {

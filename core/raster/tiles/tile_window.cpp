@@ -1,4 +1,3 @@
-#include "method/fill_grid.hpp"
 #include "raster/tiles/tile_window.hpp"
 
 #include <algorithm>
@@ -6,6 +5,7 @@
 
 #include "common/distance.hpp"
 #include "common/padding.hpp"
+#include "method/fill_grid.hpp"
 
 namespace mcmd {
 
@@ -108,8 +108,9 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
       const std::size_t i = grid.index(x - ox, y - oy);
       r.z[k] = grid.elevations()[i];
       bool write = !known[i];
-      if (write && max_distance > 0 && dist[i] > max_distance)
-        write = beyond_window && guide->coarse_distance(x, y) <= max_distance;
+      // Beyond what the window sees, the guide's coarse distance decides.
+      if (write && max_distance > 0 && !within_fill_distance(dist[i], max_distance))
+        write = beyond_window && within_fill_distance(guide->coarse_distance(x, y), max_distance);
       r.write[k] = write ? 1 : 0;
     }
   return r;

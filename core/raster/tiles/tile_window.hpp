@@ -12,11 +12,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "raster/tiles/blend.hpp"
-#include "raster/coarse_guide.hpp"
 #include "common/grid.hpp"
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
+#include "raster/coarse_guide.hpp"
+#include "raster/tiles/blend.hpp"
 #include "raster/tiles/tile_layout.hpp"
 
 namespace mcmd {
