@@ -1,15 +1,14 @@
 // MCMDFillNodata() on in-memory datasets, plus the pieces behind it: option
 // parsing, type conversion and the distance transform behind -md.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <limits>
 
-#include "cpl_string.h"
 #include "common/distance.hpp"
+#include "cpl_string.h"
+#include "lib/options.hpp"
+#include "lib/pixel_type.hpp"
 #include "mcmd_gdal.h"
-#include "options.hpp"
-#include "pixel_type.hpp"
 
 namespace {
 

@@ -1,16 +1,15 @@
 // read_window marks the voids of a band whose mask is its nodata value from
 // the values it reads; these tests hold it to GDAL's own nodata mask band, on
 // values at and around the nodata, for every type that takes that path.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <limits>
 #include <string>
 #include <vector>
 
-#include "band_window.hpp"
 #include "gdal_priv.h"
-#include "pixel_type.hpp"
+#include "lib/band_window.hpp"
+#include "lib/pixel_type.hpp"
 #include "test_support.hpp"
 
 namespace {

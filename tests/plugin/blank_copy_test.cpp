@@ -5,17 +5,16 @@
 // whichever path the fill takes (whole raster, tiles, paper method, cells
 // left void by MAX_DISTANCE, no void at all, a type read as Float64).
 #include <gtest/gtest.h>
-
 #include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
 
-#include "blank_source.hpp"
 #include "cpl_string.h"
-#include "fill_band.hpp"
 #include "gdal_priv.h"
-#include "options.hpp"
+#include "lib/blank_source.hpp"
+#include "lib/fill_band.hpp"
+#include "lib/options.hpp"
 #include "test_support.hpp"
 
 namespace {

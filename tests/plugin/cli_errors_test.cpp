@@ -1,8 +1,7 @@
 // Bad input: non-zero exit, exactly one "mcmd_fillnodata: error: ..." line on
 // stderr, no output or temporary file left, the source untouched.
-#include <gtest/gtest.h>
-
 #include <fstream>
+#include <gtest/gtest.h>
 
 #include "test_support.hpp"
 

@@ -1,9 +1,8 @@
 // mcmd_fillnodata end to end: metadata kept, mask file, in place, multi-band,
 // output formats and creation options, -md, determinism, progress and help.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstring>
+#include <gtest/gtest.h>
 
 #include "test_support.hpp"
 

@@ -1,8 +1,7 @@
 // The CLI through the tiled engine: thread determinism, tile sizes, in-place
 // versus copy, and formats written from a work file.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 #include <vector>
 

@@ -1,9 +1,8 @@
 // mcmd_fillnodata on every GDAL data type: valid cells bit-exact, no void left,
 // no filled cell equal to nodata, type/size kept.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstring>
+#include <gtest/gtest.h>
 
 #include "test_support.hpp"
 

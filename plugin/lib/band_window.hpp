@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gdal_priv.h"
-#include "pixel_type.hpp"
+#include "lib/pixel_type.hpp"
 
 namespace mcmd::gdal {
 

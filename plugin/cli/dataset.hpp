@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "cli_errors.hpp"
+#include "cli/error_log.hpp"
 #include "gdal_priv.h"
 
 namespace mcmd::cli {

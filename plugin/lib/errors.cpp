@@ -1,9 +1,9 @@
-#include "errors.hpp"
+#include "lib/errors.hpp"
 
 #include <new>
 
+#include "lib/options.hpp"
 #include "mcmd/progress.hpp"
-#include "options.hpp"
 
 namespace mcmd::gdal {
 

@@ -1,10 +1,10 @@
-#include "output_file.hpp"
+#include "cli/output_file.hpp"
 
 #include <unistd.h>
 
 #include "cpl_conv.h"
 #include "cpl_vsi.h"
-#include "errors.hpp"
+#include "lib/errors.hpp"
 
 namespace mcmd::cli {
 

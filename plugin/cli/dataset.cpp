@@ -1,6 +1,6 @@
-#include "dataset.hpp"
+#include "cli/dataset.hpp"
 
-#include "errors.hpp"
+#include "lib/errors.hpp"
 
 namespace mcmd::cli {
 

@@ -7,11 +7,10 @@
 // already touched (malloc reusing freed memory), the advice changes nothing.
 // Only the executable replaces operator new: the C API library leaves its
 // host's allocator alone. Measurements: docs/default-method.md, session 10.
-#include <sys/mman.h>
-
 #include <cstdint>
 #include <cstdlib>
 #include <new>
+#include <sys/mman.h>
 
 namespace {
 

@@ -1,8 +1,8 @@
 // What mcmd_fillnodata does once its command line is parsed.
 #pragma once
 
-#include "cli_args.hpp"
-#include "cli_errors.hpp"
+#include "cli/args.hpp"
+#include "cli/error_log.hpp"
 #include "gdal.h"
 
 namespace mcmd::cli {

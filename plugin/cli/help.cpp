@@ -1,4 +1,4 @@
-#include "cli_help.hpp"
+#include "cli/help.hpp"
 
 #include "gdal.h"
 

@@ -12,11 +12,11 @@
 #include <functional>
 #include <vector>
 
-#include "band_window.hpp"
-#include "fill_band.hpp"
 #include "gdal_priv.h"
+#include "lib/band_window.hpp"
+#include "lib/fill_request.hpp"
+#include "lib/pixel_type.hpp"
 #include "mcmd/fill_raster.hpp"
-#include "pixel_type.hpp"
 
 namespace mcmd::gdal {
 

@@ -1,11 +1,11 @@
-#include "band_access.hpp"
+#include "lib/band_access.hpp"
 
 #include <algorithm>
 #include <string>
 #include <utility>
 
-#include "band_window.hpp"
-#include "errors.hpp"
+#include "lib/band_window.hpp"
+#include "lib/errors.hpp"
 
 namespace mcmd::gdal {
 

@@ -1,12 +1,12 @@
-#include "background_copy.hpp"
+#include "cli/background_copy.hpp"
 
 #include <algorithm>
 #include <memory>
 #include <utility>
 
-#include "blank_source.hpp"
-#include "cli_errors.hpp"
-#include "errors.hpp"
+#include "cli/error_log.hpp"
+#include "lib/blank_source.hpp"
+#include "lib/errors.hpp"
 
 namespace mcmd::cli {
 

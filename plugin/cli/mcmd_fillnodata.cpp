@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <string>
 
-#include "cli_args.hpp"
-#include "cli_errors.hpp"
-#include "cli_help.hpp"
-#include "cli_run.hpp"
+#include "cli/args.hpp"
+#include "cli/error_log.hpp"
+#include "cli/help.hpp"
+#include "cli/run.hpp"
 #include "cpl_conv.h"
 #include "gdal.h"
 

@@ -1,10 +1,10 @@
-#include "pixel_type.hpp"
+#include "lib/pixel_type.hpp"
 
 #include <cmath>
 #include <cstring>
 #include <limits>
 
-#include "errors.hpp"
+#include "lib/errors.hpp"
 
 namespace mcmd::gdal {
 

@@ -1,4 +1,4 @@
-#include "options.hpp"
+#include "lib/options.hpp"
 
 #include <cerrno>
 #include <cmath>

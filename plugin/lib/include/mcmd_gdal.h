@@ -8,7 +8,7 @@
  *               the band; NULL uses the band's own mask (nodata value, alpha
  *               band or per-dataset mask). NaN cells of float bands are always
  *               voids.
- *  papszOptions NAME=VALUE options, all optional (see plugin/src/options.hpp):
+ *  papszOptions NAME=VALUE options, all optional (parsed in plugin/lib/options.cpp):
  *               METHOD=mcmd|paper-ds|paper-te, DELTA=normalized|paper,
  *               I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT,
  *               RS=<fraction of the known elevation range>|auto, SEED,
@@ -26,11 +26,23 @@
 
 #include "gdal.h"
 
+/* The library is built with hidden symbols; these are its interface. */
+#if defined(_WIN32)
+#define MCMD_API __declspec(dllexport)
+#elif defined(__GNUC__)
+#define MCMD_API __attribute__((visibility("default")))
+#else
+#define MCMD_API
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-CPLErr MCMDFillNodata(GDALRasterBandH hTargetBand, GDALRasterBandH hMaskBand,
+/* The mcmd version, e.g. "0.1.0". */
+MCMD_API const char *MCMDVersion(void);
+
+MCMD_API CPLErr MCMDFillNodata(GDALRasterBandH hTargetBand, GDALRasterBandH hMaskBand,
                       CSLConstList papszOptions, GDALProgressFunc pfnProgress,
                       void *pProgressArg);
 

@@ -1,18 +1,18 @@
-#include "cli_run.hpp"
+#include "cli/run.hpp"
 
 #include <csignal>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "cli/background_copy.hpp"
+#include "cli/dataset.hpp"
+#include "cli/output_file.hpp"
 #include "cpl_string.h"
 #include "cpl_vsi.h"
-#include "background_copy.hpp"
-#include "dataset.hpp"
-#include "errors.hpp"
-#include "fill_band.hpp"
+#include "lib/errors.hpp"
+#include "lib/fill_band.hpp"
 #include "mcmd/fill_raster.hpp"
-#include "output_file.hpp"
 
 namespace mcmd::cli {
 

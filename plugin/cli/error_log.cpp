@@ -1,4 +1,4 @@
-#include "cli_errors.hpp"
+#include "cli/error_log.hpp"
 
 #include "cpl_error.h"
 

@@ -18,8 +18,8 @@
 #include <string>
 #include <thread>
 
+#include "cli/dataset.hpp"
 #include "cpl_string.h"
-#include "dataset.hpp"
 #include "gdal_priv.h"
 
 namespace mcmd::cli {

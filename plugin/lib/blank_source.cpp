@@ -1,4 +1,4 @@
-#include "blank_source.hpp"
+#include "lib/blank_source.hpp"
 
 #include <cstring>
 

@@ -1,4 +1,4 @@
-#include "cli_args.hpp"
+#include "cli/args.hpp"
 
 #include <cstdlib>
 #include <map>

@@ -1,4 +1,4 @@
-// Fill the voids of one band through the core's tiled fill (docs/tiling.md):
+// Fill the voids of one band through the core's raster engine (fill_raster.hpp):
 // block-wise reads of the source band and its masks, writes of the filled void
 // cells only; memory bounded by the tile size and thread count.
 #pragma once
@@ -7,18 +7,11 @@
 #include <vector>
 
 #include "gdal_priv.h"
+#include "lib/fill_request.hpp"
+#include "lib/options.hpp"
 #include "mcmd/progress.hpp"
-#include "options.hpp"
 
 namespace mcmd::gdal {
-
-struct FillRequest {
-  std::vector<GDALRasterBand*> masks;  // validity masks, 0 = void (see read_window)
-  bool require_void_marker = false;    // fail when no mask and no NaN marks a void
-  bool use_nodata = true;              // honour the band's nodata value (see read_window)
-  int band_number = 0;                 // for messages; 0 = unnamed
-  bool blank_target = false;           // the target (a copy) holds no cell yet: write them all
-};
 
 // The band's own validity mask, or nullptr when it says every cell is valid.
 GDALRasterBand* own_mask(GDALRasterBand& band);
@@ -37,9 +30,6 @@ void check_band(GDALRasterBand& band, const FillRequest& request);
 void fill_band(GDALRasterBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
                const ProgressFn& progress);
 
-// The target band as a function called at the first write (it may wait for
-// a copy being made), for a target that is not the source.
-using TargetBand = std::function<GDALRasterBand&()>;
 void fill_band(const TargetBand& target, GDALRasterBand& source, const FillRequest& request, const Options& options,
                const ProgressFn& progress);
 

@@ -1,8 +1,8 @@
 // The C API: MCMDFillNodata(), GDALFillNodata's contract with MCMD inside.
-#include "errors.hpp"
-#include "fill_band.hpp"
+#include "lib/errors.hpp"
+#include "lib/fill_band.hpp"
+#include "lib/options.hpp"
 #include "mcmd_gdal.h"
-#include "options.hpp"
 
 namespace {
 
@@ -12,6 +12,12 @@ mcmd::ProgressFn progress_of(GDALProgressFunc fn, void* arg) {
 }
 
 }  // namespace
+
+#ifndef MCMD_VERSION
+#define MCMD_VERSION "unknown"
+#endif
+
+extern "C" const char* MCMDVersion(void) { return MCMD_VERSION; }
 
 extern "C" CPLErr MCMDFillNodata(GDALRasterBandH hTargetBand, GDALRasterBandH hMaskBand,
                                  CSLConstList papszOptions, GDALProgressFunc pfnProgress, void* pProgressArg) {

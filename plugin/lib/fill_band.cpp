@@ -1,12 +1,12 @@
-#include "fill_band.hpp"
+#include "lib/fill_band.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
-#include "band_access.hpp"
-#include "band_window.hpp"
-#include "errors.hpp"
+#include "lib/band_access.hpp"
+#include "lib/band_window.hpp"
+#include "lib/errors.hpp"
 #include "mcmd/fill_raster.hpp"
 
 namespace mcmd::gdal {

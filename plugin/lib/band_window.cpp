@@ -1,4 +1,4 @@
-#include "band_window.hpp"
+#include "lib/band_window.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 #include <type_traits>
 
-#include "errors.hpp"
+#include "lib/errors.hpp"
 
 namespace mcmd::gdal {
 

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Install the build into a fresh prefix, then build fill_voids.c against it
+# twice (CMake package, pkg-config) and fill a copy of a sample with each.
+# Usage: run.sh BUILD_DIR WORK_DIR SAMPLE.tif
+set -euo pipefail
+build=$1 work=$2 sample=$3
+here="$(cd "$(dirname "$0")" && pwd)"
+rm -rf "$work" && mkdir -p "$work"
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
+cmake -S "$here" -B "$work/cmake" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
+cmake --build "$work/cmake" > "$work/build.log"
+cp "$sample" "$work/a.tif"
+"$work/cmake/fill_voids" "$work/a.tif"
+pc_dir=$(dirname "$(find "$work/prefix" -name mcmd.pc | head -1)")
+lib_dir=$(dirname "$(find "$work/prefix" -name 'libmcmd_gdal.so' | head -1)")
+cc "$here/fill_voids.c" -o "$work/fill_voids_pc" $(PKG_CONFIG_PATH="$pc_dir" pkg-config --cflags --libs mcmd)
+cp "$sample" "$work/b.tif"
+LD_LIBRARY_PATH="$lib_dir" "$work/fill_voids_pc" "$work/b.tif"
+cmp "$work/a.tif" "$work/b.tif"
+echo "c_api: the installed package builds and fills with CMake and with pkg-config"
