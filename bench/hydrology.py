@@ -612,7 +612,9 @@ def write_report(a, cases, methods, notes, results, pngs, version, elapsed):
              "8-neighbour in the raw truth (a channel that follows the terrain, not an ε path "
              "across a lake or the sea), 8 cells clear of the raster border, with the disc and "
              "a 2-cell ring around it on valid cells and 2 cells clear of the other discs "
-             "(`voids.punch_valleys`). Every disc cuts a channel: the hard case for drainage.")
+             "(`voids.punch_valleys`). Every disc cuts a channel: the hard case for drainage. "
+             "The number and radii of the discs depend on the seed only, so every DEM gets "
+             "the same void area for a seed (when all its discs find a place).")
     L.append("- **blobs**: voids.py's smooth random blobs, ~5 % of the area (one large one, "
              "some touching the border): the accuracy benchmark's voids.")
     L.append("")
@@ -632,7 +634,7 @@ def write_report(a, cases, methods, notes, results, pngs, version, elapsed):
         elif typ == "ceiling":
             cmd = ("`mcmd_fillnodata SRC' DST`, SRC' = SRC with the truth-channel void cells "
                    "given back with their true heights (the ceiling of the metric: a fill that "
-                   "knew where the channels are)")
+                   "knew where the channels are; its time is that of a different input)")
         else:
             cmd = "`mcmd_fillnodata " + " ".join(args + ["SRC", "DST"]) + "`"
         note = f" — **not run**: {notes[m]}" if m in notes else ""
@@ -757,7 +759,8 @@ def write_report(a, cases, methods, notes, results, pngs, version, elapsed):
         L.append("")
         L.append("Strict pits · depression cells /100 void cells (plain Priority-Flood raises "
                  "them; not a difference: the terrain under the voids is unknown) · deepest "
-                 "pond m · time s.")
+                 "pond m (it includes the tile's own depressions next to its voids, so only "
+                 "the differences between methods mean something) · time s.")
         L.append("")
         rm = [m for m in scored if T[m][1] != "ceiling"]
         L.append("| tile | void cells | " + " | ".join(lab(m) for m in rm) + " |")
