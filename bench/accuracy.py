@@ -102,13 +102,7 @@ def parse_args(argv=None):
 
 def truth_path(dem: str, work: str) -> str:
     src, crop = TRUTH_DEMS[dem]
-    p = os.path.join(V.DEM_DIR, src + ".tif")
-    if crop is None:
-        return p
-    dst = os.path.join(work, "inputs", dem + ".tif")
-    os.makedirs(os.path.dirname(dst), exist_ok=True)
-    V.crop_to(p, dst, *crop)
-    return dst
+    return V.source_path(src, crop, work, name=dem)
 
 
 def main(argv=None):

@@ -14,7 +14,9 @@ Everything that both benchmarks need lives here, in one place:
   error, Laplacian-spread ratio, mean-slope ratio, completeness;
 * running a command under ``/usr/bin/time -v`` (wall time, peak RSS) with a
   timeout;
-* hillshade PNGs (gdaldem hillshade) of a window around the largest void.
+* hillshade PNGs (gdaldem hillshade) of a window around the largest void;
+* ``valleys`` voids (discs centred on given cells, e.g. channel cells) and
+  a probe of whether the CLI accepts an option (bench/hydrology.py).
 
 Run with /usr/bin/python3 (needs numpy and osgeo.gdal; nothing else).
 """
@@ -40,7 +42,9 @@ gdal.UseExceptions()
 
 BENCH_DIR = os.path.dirname(os.path.abspath(__file__))
 ROOT_DIR = os.path.dirname(BENCH_DIR)
-DEM_DIR = os.path.normpath(os.path.join(ROOT_DIR, "..", "shared", "dem"))
+# ../shared/dem relative to the project root; MCMD_DEM_DIR overrides it (a
+# worktree checked out elsewhere)
+DEM_DIR = os.environ.get("MCMD_DEM_DIR") or os.path.normpath(os.path.join(ROOT_DIR, "..", "shared", "dem"))
 DEFAULT_MCMD = os.path.join(ROOT_DIR, "build", "bin", "mcmd_fillnodata")
 GDAL_FILL = "gdal_fillnodata.py"
 
@@ -140,6 +144,33 @@ def write_voided(src_path: str, dst_path: str, void: np.ndarray,
     ds = None
     os.replace(tmp, dst_path)
     return nodata
+
+
+def pixel_size_m(path: str) -> tuple[float, float]:
+    """(dx, dy) of a pixel in metres: the geotransform's for a projected CRS;
+    for a geographic one, degrees converted at the raster's centre latitude
+    (111320 m per degree of latitude, times cos(latitude) for longitude)."""
+    ds = gdal.Open(path)
+    gt = ds.GetGeoTransform()
+    dx, dy = abs(gt[1]), abs(gt[5])
+    if is_geographic(path):
+        lat = gt[3] + gt[5] * ds.RasterYSize / 2.0
+        dy *= 111320.0
+        dx *= 111320.0 * math.cos(math.radians(lat))
+    return dx, dy
+
+
+def source_path(src: str, crop, work: str, name: str | None = None) -> str:
+    """Path of a DEM of ``DEM_DIR`` (``src``, without .tif), or of its crop
+    ``crop`` = (xoff, yoff, w, h) made once under ``work``/inputs as
+    ``name``.tif (default: src)."""
+    p = os.path.join(DEM_DIR, src + ".tif")
+    if crop is None:
+        return p
+    dst = os.path.join(work, "inputs", (name or src) + ".tif")
+    os.makedirs(os.path.dirname(dst), exist_ok=True)
+    crop_to(p, dst, *crop)
+    return dst
 
 
 def crop_to(src_path: str, dst_path: str, xoff: int, yoff: int, w: int, h: int):
@@ -271,25 +302,77 @@ def punch(kind: str, shape, seed: int, valid: np.ndarray | None = None) -> np.nd
     raise ValueError(f"unknown void kind {kind!r}")
 
 
-def make_voided(src_path: str, dst_path: str, kind: str, seed: int) -> dict:
+def make_voided(src_path: str, dst_path: str, kind: str, seed: int,
+                punch_fn=None, tag: str | None = None) -> dict:
     """Create (once) the voided copy of a void-free DEM. Returns a small info
-    dict (also cached next to the file as JSON)."""
+    dict (also cached next to the file as JSON). ``punch_fn(src Raster) ->
+    void mask`` replaces ``punch(kind, ...)`` for kinds that need more than
+    the shape (valleys); a cached file is remade when its ``tag`` differs
+    (e.g. the channel definition its voids were centred on)."""
     info_path = dst_path + ".json"
     if os.path.exists(dst_path) and os.path.exists(info_path):
         with open(info_path) as f:
-            return json.load(f)
+            info = json.load(f)
+        if info.get("tag") == tag:
+            return info
     src = read_raster(src_path)
     valid = src.valid()
-    void = punch(kind, src.shape, seed, valid=valid)
+    void = punch_fn(src) if punch_fn else punch(kind, src.shape, seed, valid=valid)
     nodata = write_voided(src_path, dst_path, void, src)
     info = {"src": src_path, "kind": kind, "seed": seed,
             "width": src.shape[1], "height": src.shape[0],
             "void_cells": int(void.sum()),
             "void_fraction": float(void.sum()) / void.size,
             "nodata": nodata}
+    if tag is not None:
+        info["tag"] = tag
     with open(info_path, "w") as f:
         json.dump(info, f, indent=1)
     return info
+
+
+def punch_valleys(shape, seed: int, centres: np.ndarray, valid: np.ndarray | None = None,
+                  n_range=(6, 10), r_range=(8, 25), border: int = 8, gap: int = 2,
+                  tries: int = 4000) -> tuple[np.ndarray, list]:
+    """Void mask (True = removed) of ``valleys`` voids: n (uniform in
+    ``n_range``, inclusive) discs of integer radius r (uniform in
+    ``r_range``, inclusive; placed largest first), each centred on a cell of
+    ``centres`` (e.g. the true terrain's channel cells) drawn at random.
+    A disc is kept only if it stays ``border`` cells clear of the raster
+    edge, every cell of it and of a ``gap``-cell ring around it is valid,
+    and it is ``gap`` cells clear of the discs already placed (no overlap,
+    separate voids). Returns (void, [(cx, cy, r), ...])."""
+    rng = _rng(seed, "valleys")
+    h, w = shape
+    void = np.zeros(shape, dtype=bool)
+    ys, xs = np.nonzero(centres)
+    n = int(rng.integers(n_range[0], n_range[1] + 1))
+    radii = sorted((int(r) for r in rng.integers(r_range[0], r_range[1] + 1, size=n)),
+                   reverse=True)
+    discs = []
+    if ys.size == 0:
+        return void, discs
+    for r in radii:
+        R = r + gap
+        yy, xx = np.mgrid[-R:R + 1, -R:R + 1]
+        ring = yy * yy + xx * xx <= R * R
+        disc = yy * yy + xx * xx <= r * r
+        for _ in range(tries):
+            i = int(rng.integers(ys.size))
+            cy, cx = int(ys[i]), int(xs[i])
+            if cx - r < border or cy - r < border or cx + r >= w - border or cy + r >= h - border:
+                continue
+            if any((cx - x) ** 2 + (cy - y) ** 2 <= (r + q + gap) ** 2 for x, y, q in discs):
+                continue
+            y0, x0 = cy - R, cx - R
+            if y0 < 0 or x0 < 0 or cy + R >= h or cx + R >= w:
+                continue
+            if valid is not None and not valid[y0:y0 + 2 * R + 1, x0:x0 + 2 * R + 1][ring].all():
+                continue
+            void[y0:y0 + 2 * R + 1, x0:x0 + 2 * R + 1] |= disc
+            discs.append((cx, cy, r))
+            break
+    return void, discs
 
 
 # --------------------------------------------------------------------------
@@ -513,6 +596,39 @@ def mcmd_status(mcmd: str) -> tuple[bool, str]:
         return False, f"mcmd CLI {mcmd!r} does not run: {e}"
     text = (p.stdout or "") + (p.stderr or "")
     return True, text
+
+
+def mcmd_accepts(mcmd: str, args: list[str], timeout: float = 60) -> tuple[bool, str]:
+    """(accepted, message): does the CLI accept ``args``? Fills a 17x17 test
+    raster with a 5x5 void with them; a CLI that rejects an option (a mode
+    not built yet) fails here, once, instead of on every case."""
+    tag = hashlib.md5(f"{os.getpid()} {time.time()} {args}".encode()).hexdigest()[:10]
+    d = tempfile.mkdtemp(prefix="mcmd_probe_")
+    src, dst = os.path.join(d, f"in_{tag}.tif"), os.path.join(d, f"out_{tag}.tif")
+    try:
+        yy, xx = np.mgrid[0:17, 0:17]
+        z = (100 + 3 * xx + 2 * yy).astype(np.int16)
+        z[6:11, 6:11] = -32768
+        ds = gdal.GetDriverByName("GTiff").Create(src, 17, 17, 1, gdal.GDT_Int16)
+        ds.SetGeoTransform((0, 30, 0, 0, 0, -30))
+        b = ds.GetRasterBand(1)
+        b.SetNoDataValue(-32768)
+        b.WriteArray(z)
+        b = ds = None
+        try:
+            p = subprocess.run([mcmd, "-q"] + list(args) + [src, dst], capture_output=True,
+                               text=True, timeout=timeout)
+        except Exception as e:  # noqa: BLE001
+            return False, f"does not run: {e}"
+        if p.returncode != 0 or not os.path.exists(dst):
+            tail = ((p.stderr or "") + (p.stdout or "")).strip().splitlines()
+            return False, f"rc={p.returncode}: " + (tail[0] if tail else "no output")
+        return True, "ok"
+    finally:
+        for f in (src, dst):
+            if os.path.exists(f):
+                os.unlink(f)
+        os.rmdir(d)
 
 
 def binary_id(path: str) -> str:

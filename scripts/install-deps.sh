@@ -4,6 +4,7 @@ set -euo pipefail
 packages=(
   build-essential cmake git pkg-config            # C++20 toolchain (GCC 12), CMake >= 3.25
   libgdal-dev gdal-bin python3-gdal python3-numpy  # GDAL 3.6 + PROJ 9, CLI tools, Python bindings
+  python3-numba                                    # JIT flow routing of bench/hydrology.py
   libgtest-dev googletest                          # GoogleTest for ctest
   qgis python3-qgis qgis-providers python3-pytest  # the QGIS Processing provider and its tests
   time zip                                         # /usr/bin/time -v for benchmarks, plugin zip
