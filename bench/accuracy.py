@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Accuracy benchmark (issue 3, item 3): mcmd methods vs gdal_fillnodata.
+"""Accuracy benchmark: mcmd methods vs gdal_fillnodata.
 
 On void-free DEMs from ../shared/dem with voids punched in (kept3: a random
 3.3 % of cells kept; blobs: ~5 % of the area in blob voids) x 3 seeds, plus
@@ -162,9 +162,8 @@ def main(argv=None):
             results[(cid, m)] = r
 
     pngs = {} if a.no_png else make_pngs(a, cases, methods, work)
-    write_report(a, cases, methods, skipped, results, pngs, msg if not ok else None,
-                 time.time() - t_start)
-    log(f"wrote {a.out}")
+    write_report(a, cases, methods, skipped, results, pngs, msg if not ok else None)
+    log(f"wrote {a.out} ({time.time() - t_start:.0f} s)")
     return 0
 
 
@@ -214,16 +213,15 @@ def ratio(r, ref, key):
     return x / y
 
 
-def write_report(a, cases, methods, skipped, results, pngs, mcmd_msg, elapsed):
+def write_report(a, cases, methods, skipped, results, pngs, mcmd_msg):
     L = []
     md_dir = os.path.dirname(os.path.abspath(a.out))
     rel = lambda p: os.path.relpath(p, md_dir)  # noqa: E731
     L.append("# Accuracy: mcmd vs gdal_fillnodata" + (" (QUICK smoke run)" if a.quick else ""))
     L.append("")
-    L.append(f"Generated {time.strftime('%Y-%m-%d %H:%M %Z')} on {V.machine_info()}; "
-             f"commit {V.git_rev()}; mcmd binary `{os.path.relpath(a.mcmd, V.ROOT_DIR)}` "
-             f"(sha256 {V.binary_id(a.mcmd)}); this invocation took {elapsed:.0f} s "
-             "(cached results reused where the binary and command were unchanged).")
+    L.append(f"Measured on {V.machine_info()}. Every mcmd result here comes from one build "
+             "of `mcmd_fillnodata` (results are cached per binary and command line: "
+             "bench/README.md).")
     L.append("")
     L.append("Regenerate: `bench/run_accuracy.sh` (options: `--quick`, `--only DEM`, "
              "`--methods m1,m2`, `--force`; see bench/README.md).")
@@ -275,10 +273,10 @@ def write_report(a, cases, methods, skipped, results, pngs, mcmd_msg, elapsed):
                 V.fmt(V.median(tr), ".2f"), V.fmt(wt, ".2f")]) + " |")
         L.append("")
 
-    # done-when checks (issue 3)
+    # targets
     chk = done_checks(a, truth_cases, results)
     if chk:
-        L.append("## Issue 3 \"done when\" checks (automatic)")
+        L.append("## Targets (checked automatically)")
         L.append("")
         L.append("| check | value | target | pass |")
         L.append("|---|---|---|---|")

@@ -795,7 +795,8 @@ def machine_info() -> str:
             mem = f"{kb / 1024 / 1024:.0f} GiB RAM"
     except (OSError, ValueError, IndexError):
         pass
-    return f"{cpu}, {os.cpu_count()} cores, {mem}, {platform.system()} {platform.release()}, GDAL {gdal.__version__}"
+    # The kernel's release is left out: on a VM it names the instance, not the machine.
+    return f"{cpu}, {os.cpu_count()} cores, {mem}, {platform.system()}, GDAL {gdal.__version__}"
 
 
 def git_rev() -> str:
