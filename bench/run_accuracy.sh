@@ -1,5 +1,5 @@
 #!/bin/sh
-# One command for the accuracy benchmark (issue 3): writes bench/ACCURACY.md
+# One command for the accuracy benchmark: writes bench/ACCURACY.md
 # and bench/accuracy/*.png. Extra arguments go to accuracy.py, e.g.
 #   bench/run_accuracy.sh --quick
 #   bench/run_accuracy.sh --mcmd /tmp/build/bin/mcmd_fillnodata --only zion

@@ -1,5 +1,5 @@
 #!/bin/sh
-# One command for the speed/memory benchmark (issue 4): writes bench/RESULTS.md
+# One command for the speed/memory benchmark: writes bench/RESULTS.md
 # and bench/speed/*.png. Extra arguments go to speed.py, e.g.
 #   bench/run_speed.sh --quick
 #   bench/run_speed.sh --mcmd /tmp/build/bin/mcmd_fillnodata --only sierra
