@@ -6,6 +6,7 @@ packages=(
   libgdal-dev gdal-bin python3-gdal python3-numpy  # GDAL 3.6 + PROJ 9, CLI tools, Python bindings
   libgtest-dev googletest                          # GoogleTest for ctest
   qgis python3-qgis qgis-providers python3-pytest  # the QGIS Processing provider and its tests
+  pybind11-dev python3-dev                         # the Python package mcmd (python/)
   time zip                                         # /usr/bin/time -v for benchmarks, plugin zip
 )
 sudo=""
