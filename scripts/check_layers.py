@@ -36,7 +36,7 @@ LAYERS = {
     "plugin/lib/include": 8,
     "plugin/lib": 9,
     "plugin/cli": 10,
-    "python/src": 10,
+    "python/src": 11,
 }
 PUBLIC = {"core/include/mcmd", "plugin/lib/include"}
 # Where a quoted include is looked for, per top folder (first match wins).

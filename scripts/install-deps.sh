@@ -7,6 +7,7 @@ packages=(
   python3-numba                                    # JIT flow routing of bench/hydrology.py
   libgtest-dev googletest                          # GoogleTest for ctest
   qgis python3-qgis qgis-providers python3-pytest  # the QGIS Processing provider and its tests
+  pybind11-dev python3-dev                         # the Python package mcmd (python/)
   time zip                                         # /usr/bin/time -v for benchmarks, plugin zip
 )
 sudo=""

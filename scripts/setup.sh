@@ -5,6 +5,7 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 bash "$root/scripts/install-deps.sh"
 bash "$root/scripts/build.sh"
+bash "$root/scripts/install-python.sh"  # import mcmd from /usr/bin/python3
 mkdir -p "$root/out"
 rm -f "$root/out/sample_filled.tif"
 "$root/build/bin/mcmd_fillnodata" "$root/testdata/sample_dem.tif" "$root/out/sample_filled.tif"

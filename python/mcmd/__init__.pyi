@@ -1,0 +1,40 @@
+# Type hints of the package mcmd (its public API: mcmd/__init__.py).
+import os
+from typing import Any, Callable, Iterable, Mapping, Optional
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+__all__: list[str]
+
+Progress = Callable[[float], Optional[bool]]
+
+class Error(RuntimeError): ...
+class Cancelled(Error): ...
+
+def fill(
+    array: npt.ArrayLike,
+    mask: npt.ArrayLike | None = ...,
+    nodata: int | float | None = ...,
+    *,
+    method: str = ...,
+    rs: float | str = ...,
+    seed: int = ...,
+    max_distance: float = ...,
+    threads: int | None = ...,
+    progress: Progress | None = ...,
+    **options: Any,
+) -> np.ndarray: ...
+def fill_file(
+    src: str | os.PathLike[str],
+    dst: str | os.PathLike[str] | None = ...,
+    *,
+    bands: int | Iterable[int] | None = ...,
+    mask: str | os.PathLike[str] | None = ...,
+    nomask: bool = ...,
+    format: str | None = ...,
+    creation_options: Mapping[str, Any] | Iterable[str] | None = ...,
+    progress: Progress | None = ...,
+    **options: Any,
+) -> str: ...

@@ -1,0 +1,48 @@
+"""The package as installed: its files, its type stub, its docstrings."""
+import ast
+import inspect
+import os
+
+import mcmd
+
+PACKAGE = os.path.dirname(mcmd.__file__)
+
+
+def stub():
+    with open(os.path.join(PACKAGE, "__init__.pyi"), encoding="utf-8") as f:
+        return ast.parse(f.read())
+
+
+def test_package_files():
+    names = os.listdir(PACKAGE)
+    assert "py.typed" in names and "__init__.pyi" in names
+    assert any(n.startswith("_mcmd.") and n.endswith(".so") for n in names)
+
+
+def test_stub_matches_the_functions():
+    functions = {node.name: node for node in stub().body if isinstance(node, ast.FunctionDef)}
+    public = [name for name in mcmd.__all__ if inspect.isfunction(getattr(mcmd, name))]
+    assert sorted(functions) == sorted(public) == ["fill", "fill_file"]
+    for name in public:
+        node, sig = functions[name], inspect.signature(getattr(mcmd, name))
+        stubbed = ([(a.arg, "POSITIONAL_OR_KEYWORD") for a in node.args.args]
+                   + [(a.arg, "KEYWORD_ONLY") for a in node.args.kwonlyargs]
+                   + [(node.args.kwarg.arg, "VAR_KEYWORD")])
+        assert stubbed == [(p.name, p.kind.name) for p in sig.parameters.values()], name
+        # Every parameter and the return value are annotated.
+        assert all(a.annotation is not None for a in node.args.args + node.args.kwonlyargs) and node.returns
+
+
+def test_stub_names_the_exceptions_and_version():
+    body = stub().body
+    classes = {node.name: [ast.unparse(b) for b in node.bases] for node in body if isinstance(node, ast.ClassDef)}
+    assert classes == {"Error": ["RuntimeError"], "Cancelled": ["Error"]}
+    assert any(isinstance(node, ast.AnnAssign) and node.target.id == "__version__" for node in body)
+    assert set(mcmd.__all__) == {"fill", "fill_file", "Error", "Cancelled", "__version__"}
+
+
+def test_docstrings():
+    for obj in (mcmd, mcmd.fill, mcmd.fill_file, mcmd.Error, mcmd.Cancelled):
+        assert obj.__doc__ and len(obj.__doc__) > 40
+    for word in ("Parameters", "Raises", "nodata", "mask", "rs"):
+        assert word in mcmd.fill.__doc__
