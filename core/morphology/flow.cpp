@@ -114,6 +114,27 @@ class Flood {
   std::size_t pit_next_ = 0;
 };
 
+// A land cell's receiver: the first sink beside it (east, then clockwise),
+// else its steepest lower land neighbour on the flooded levels (diagonals
+// √2 away), else -1 (a seed with no lower neighbour: out of the field).
+std::int32_t receiver_of(std::int32_t i, int x, int y, int w, int h, const FlowCell* kind,
+                         const std::vector<double>& level) {
+  std::int32_t best = -1;
+  double steepest = 0.0;
+  bool beside_sink = false;
+  for_each_neighbour(x, y, w, h, [&](int k, std::int32_t j) {
+    if (beside_sink) return;
+    if (kind[j] == FlowCell::sink) {
+      best = j, beside_sink = true;
+      return;
+    }
+    if (kind[j] != FlowCell::land) return;
+    const double slope = (level[i] - level[j]) * (k % 2 ? M_SQRT1_2 : 1.0);
+    if (slope > steepest) steepest = slope, best = j;
+  });
+  return best;
+}
+
 }  // namespace
 
 std::vector<double> flood_levels(const double* z, int w, int h, const FlowCell* kind,
@@ -125,21 +146,36 @@ Flow route(const double* z, int w, int h, const FlowCell* kind) {
   Flow f;
   f.w = w;
   f.h = h;
-  flood_levels(z, w, h, kind, &f.order, &f.receiver);
-  for (const std::int32_t i : f.order) {
-    if (f.receiver[i] >= 0) continue;  // a seed: into a sink beside it, or out of the field
-    for_each_neighbour(i % w, i / w, w, h, [&](int, std::int32_t j) {
-      if (f.receiver[i] < 0 && kind[j] == FlowCell::sink) f.receiver[i] = j;
-    });
-  }
+  const std::vector<double> level = flood_levels(z, w, h, kind, &f.order);
+  f.receiver.assign(static_cast<std::size_t>(w) * h, -1);
+  for (int y = 0; y < h; ++y)  // raster order: the neighbours' levels are near in memory
+    for (int x = 0; x < w; ++x) {
+      const std::int32_t i = y * w + x;
+      if (kind[i] == FlowCell::land) f.receiver[i] = receiver_of(i, x, y, w, h, kind, level);
+    }
   return f;
 }
 
 std::vector<double> accumulation(const Flow& flow, const FlowCell* kind) {
-  std::vector<double> a(flow.receiver.size(), 0.0);
-  for (const std::int32_t i : flow.order) a[i] = 1.0;
-  for (auto it = flow.order.rbegin(); it != flow.order.rend(); ++it)  // upstream first
-    if (const std::int32_t r = flow.receiver[*it]; r >= 0 && kind[r] != FlowCell::off) a[r] += a[*it];
+  // In topological order (Kahn): a cell once every donor has given.
+  const std::size_t n = flow.receiver.size();
+  std::vector<double> a(n, 0.0);
+  std::vector<std::uint8_t> donors(n, 0);  // at most 8
+  for (const std::int32_t i : flow.order) {
+    a[i] = 1.0;
+    if (const std::int32_t r = flow.receiver[i]; r >= 0) ++donors[r];
+  }
+  std::vector<std::int32_t> ready;
+  for (const std::int32_t i : flow.order)
+    if (donors[i] == 0) ready.push_back(i);
+  while (!ready.empty()) {
+    const std::int32_t i = ready.back();
+    ready.pop_back();
+    const std::int32_t r = flow.receiver[i];
+    if (r < 0 || kind[r] == FlowCell::off) continue;
+    a[r] += a[i];
+    if (--donors[r] == 0 && kind[r] == FlowCell::land) ready.push_back(r);
+  }
   return a;
 }
 

@@ -17,12 +17,13 @@ enum class FlowCell : std::uint8_t {
 
 struct Flow {
   int w = 0, h = 0;
-  // Per cell, the neighbour it drains to: the land cell the flood reached it
-  // from (its lowest way out), or for a land cell beside a sink the first
-  // such sink cell (east, then clockwise); -1 where water leaves the field
-  // (a seed on its border or beside an off cell) and for off and sink cells.
+  // Per cell, the neighbour it drains to (D8): for a land cell beside a sink
+  // the first such sink cell (east, then clockwise), else its steepest lower
+  // land neighbour on the flooded levels (diagonals √2 away); -1 where water
+  // leaves the field (a seed with no lower neighbour) and for off and sink
+  // cells.
   std::vector<std::int32_t> receiver;
-  // The land cells in the flood's order: each after its receiver.
+  // The land cells in the flood's order.
   std::vector<std::int32_t> order;
 };
 
@@ -36,8 +37,8 @@ std::vector<double> flood_levels(const double* z, int w, int h, const FlowCell* 
                                  std::vector<std::int32_t>* order = nullptr,
                                  std::vector<std::int32_t>* from = nullptr);
 
-// The flow of the flood's paths (Flow::receiver). Sink cells' z is not read.
-// Pre: as flood_levels.
+// D8 flow on the flooded levels (Flow::receiver): every land cell drains.
+// Sink cells' z is not read. Pre: as flood_levels.
 Flow route(const double* z, int w, int h, const FlowCell* kind);
 
 // Cells draining through each cell, itself included (1 for a land cell with

@@ -113,8 +113,10 @@ TEST(RadixHeap, PopsInOrderAndEqualLevelsInTheOrderPushed) {
   EXPECT_TRUE(heap.empty());
 }
 
+double v_valley(int x, int y) { return 1000.0 - 2.0 * y + 3.0 * std::abs(x - valley_axis(y)); }
+
 TEST(Flow, AccumulationGathersAlongTheValleyFloor) {
-  MemoryRaster m = with_disc_void(121, 161, valley, -100, -100, 1);  // no void
+  MemoryRaster m = with_disc_void(121, 161, v_valley, -100, -100, 1);  // no void
   const std::vector<morph::FlowCell> land(m.z.size(), morph::FlowCell::land);
   const morph::Flow f = morph::route(m.z.data(), m.w, m.h, land.data());
   const std::vector<double> a = morph::accumulation(f, land.data());
