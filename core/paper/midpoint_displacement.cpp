@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "paper/butterfly.hpp"
 #include "paper/mdbu.hpp"
 #include "paper/subdivision.hpp"
 #include "roughness/noise.hpp"
@@ -48,7 +49,9 @@ void displace_cell(LevelContext& c, int x, int y, int level) {
     parts[i] = {c.grid.z(q.x, q.y), d, shape_for(c.params, c.grid.state(q.x, q.y)).I};
     nearest = std::min(nearest, d);
   }
-  double value = combine(c.params.delta_form, std::span(parts.data(), p.count), c.dmax);
+  double value = 0.0;
+  if (c.scheme != Scheme::butterfly || !butterfly_value(c.grid, x, y, half_spacing(level, n), value))
+    value = combine(c.params.delta_form, std::span(parts.data(), p.count), c.dmax);
   if (c.params.rs > 0) {
     const double delta = paper_delta(c.params.seed, c.grid.origin_x() + x, c.grid.origin_y() + y, level, 2,
                                      c.params.H, c.params.rt, c.params.rs);
