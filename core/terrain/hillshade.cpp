@@ -20,10 +20,10 @@ std::vector<std::uint8_t> hillshade(const std::vector<double>& z, int w, int h, 
                          (at(x - 1, y - 1) + 2 * at(x - 1, y) + at(x - 1, y + 1))) / (8 * dx);
       const double gy = ((at(x - 1, y + 1) + 2 * at(x, y + 1) + at(x + 1, y + 1)) -
                          (at(x - 1, y - 1) + 2 * at(x, y - 1) + at(x + 1, y - 1))) / (8 * dy);
-      const double slope = std::atan(std::hypot(gx, gy));
-      const double aspect = std::atan2(gy, -gx);
-      double shade = std::sin(kAltitude) * std::cos(slope) +
-                     std::cos(kAltitude) * std::sin(slope) * std::cos(kAzimuth - std::numbers::pi / 2 - aspect);
+      // The unit normal (−gx, −gy, 1)/|·| against the unit vector to the
+      // light: x east, y south, the azimuth clockwise from north.
+      double shade = (-gx * std::cos(kAltitude) * std::sin(kAzimuth) + gy * std::cos(kAltitude) * std::cos(kAzimuth) +
+                      std::sin(kAltitude)) / std::sqrt(1.0 + gx * gx + gy * gy);
       if (!std::isfinite(shade)) shade = 0;
       out[static_cast<std::size_t>(y) * w + x] = static_cast<std::uint8_t>(1 + std::lround(254 * std::clamp(shade, 0.0, 1.0)));
     }
