@@ -6,6 +6,8 @@
 
 #include "common/distance.hpp"
 #include "common/zero_runs.hpp"
+#include "morphology/channel_fill.hpp"
+#include "morphology/channels.hpp"
 #include "thin_plate/thin_plate.hpp"
 
 namespace mcmd::detail {
@@ -56,11 +58,38 @@ void pin_other_voids(const Box& rect, const std::vector<std::uint8_t>& own, std:
   }
 }
 
+// The field's part of the raster-wide inflow.
+std::vector<double> crop(const RasterMorphology& m, const Box& rect) {
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(rect.width()) * rect.height());
+  for (int y = rect.y0; y <= rect.y1; ++y) {
+    const double* row = m.inflow + static_cast<std::size_t>(y) * m.width;
+    out.insert(out.end(), row + rect.x0, row + rect.x1 + 1);
+  }
+  return out;
+}
+
+// The line cells of the field's unknown cells, as field indices.
+std::vector<morph::FieldLineCell> line_cells_in(const RasterMorphology& m, const Box& rect,
+                                                 const std::vector<CellState>& state) {
+  std::vector<morph::FieldLineCell> out;
+  if (!m.lines) return out;
+  const auto [b, e] = morph::cells_in_rows(*m.lines, rect.y0, rect.height());
+  for (std::size_t k = b; k < e; ++k) {
+    const morph::LineCell& c = (*m.lines)[k];
+    if (c.x < rect.x0 || c.x > rect.x1) continue;
+    const std::int32_t i = (c.y - rect.y0) * rect.width() + (c.x - rect.x0);
+    if (state[i] == CellState::unknown) out.push_back({i, c.kind, c.z});
+  }
+  return out;
+}
+
 }  // namespace
 
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
                                  const std::uint8_t* valid, const DeepPins& pins, const FillParams& params,
-                                 double max_distance, const ProgressFn& progress, int threads) {
+                                 double max_distance, const ProgressFn& progress, int threads,
+                                 const RasterMorphology& morphology) {
   const int w = rect.width(), h = rect.height();
   const std::size_t cells = static_cast<std::size_t>(w) * h;
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - rect.y0) * w + (x - rect.x0); };
@@ -118,7 +147,20 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
   }
   // Roughness, if any, is keyed on raster coordinates (roughness.hpp); its
   // statistics come from the field: the void and its margin.
-  thin_plate_with_roughness(view, rect.x0, rect.y0, params, schedule, progress);
+  const std::vector<morph::FieldLineCell> lines = line_cells_in(morphology, rect, state);
+  if (params.morph.channels || !lines.empty()) {  // with -morph auto, at least drained
+    // The drainage into the voids: the raster's, or the field's own (the
+    // field holds the void's surroundings up to min(32, 8 + 2·extent) +
+    // extent cells away: on the hydrology benchmark it found the same
+    // inflows as the whole raster's).
+    const std::vector<double> inflow = !params.morph.channels ? std::vector<double>{}
+                                       : morphology.inflow    ? crop(morphology, rect)
+                                                              : morph::inflow_into_voids(z.data(), valid, w, h);
+    morph::fill_with_morphology(view, rect.x0, rect.y0, own.data(), inflow.empty() ? nullptr : inflow.data(), lines,
+                                params, schedule, progress);
+  } else {
+    thin_plate_with_roughness(view, rect.x0, rect.y0, params, schedule, progress);
+  }
   for (const VoidRun& run : runs)
     for (int x = run.x0; x < run.x1; ++x) {
       const std::size_t i = at(x, run.y);

@@ -13,6 +13,7 @@
 #include "common/grid.hpp"
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
+#include "morphology/lines.hpp"
 #include "raster/coarse_guide.hpp"
 #include "raster/void_components.hpp"
 
@@ -43,6 +44,16 @@ struct DeepPins {
   double radius = 0.0;
 };
 
+// The raster's morphology: the known terrain's accumulation draining into a
+// void per raster cell (morphology/channels.hpp's inflow_into_voids; null:
+// each field computes its own with -morph auto), and the line cells in
+// voids, sorted by (y, x) (morphology/lines.hpp; null: none).
+struct RasterMorphology {
+  const double* inflow = nullptr;
+  int width = 0;  // of the raster
+  const std::vector<morph::LineCell>* lines = nullptr;
+};
+
 struct VoidFieldResult {
   double farthest = 0.0;            // of the component's cells from data
   std::vector<double> values;       // the component's cells, run after run
@@ -55,8 +66,11 @@ struct VoidFieldResult {
 // Post: when the component reaches far (reaches_far: the coarse guide's
 // tension is needed) values is empty: the caller must fill it another way.
 // `threads` run the solver of a large field (same result for any count).
+// With -morph auto or line cells in the field, it is filled with its
+// morphology (morphology/channel_fill.hpp).
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
                                  const std::uint8_t* valid, const DeepPins& pins, const FillParams& params,
-                                 double max_distance, const ProgressFn& progress = {}, int threads = 1);
+                                 double max_distance, const ProgressFn& progress = {}, int threads = 1,
+                                 const RasterMorphology& morphology = {});
 
 }  // namespace mcmd::detail

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "mcmd/fill_raster.hpp"
+#include "morphology/channels.hpp"
+#include "morphology/lines.hpp"
 #include "raster/coarse_guide.hpp"
 #include "raster/tiles/tiled_fill.hpp"
 #include "raster/void_components.hpp"
@@ -26,6 +28,8 @@ struct Whole {
   int w = 0, h = 0;
   std::vector<double> z;
   std::vector<std::uint8_t> valid;
+  std::vector<double> inflow;          // -morph auto: morphology/channels.hpp's inflow_into_voids
+  std::vector<morph::LineCell> lines;  // morphology/lines.hpp
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * w + x; }
 };
 
@@ -106,7 +110,10 @@ DomainResult solve_domain(const Whole& r, const Domain& d, DeepGuide& dg, bool m
     valid.insert(valid.end(), r.valid.begin() + from, r.valid.begin() + to);
   }
   const DeepPins pins{[&dg, may_defer] { return dg.get(may_defer); }, dg.radius()};
-  return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), pins, params, max_distance, progress, threads);
+  const RasterMorphology morphology{r.inflow.empty() ? nullptr : r.inflow.data(), r.w,
+                                    r.lines.empty() ? nullptr : &r.lines};
+  return solve_void_field(d.rect, d.runs, std::move(z), valid.data(), pins, params, max_distance, progress, threads,
+                          morphology);
 }
 
 // Hands out the domains, largest first, so that the last ones to finish are
@@ -152,10 +159,9 @@ class DomainQueue {
 };
 
 // Solves every domain, on `threads` threads (the calling one included, which
-// alone reports progress). Each result depends on its domain only. Stops
-// handing out domains at the first that reaches far (reaches_far: the tiles
-// must fill the raster), and then returns nothing.
-std::optional<std::vector<DomainResult>> solve_domains(const Whole& r, const std::vector<Domain>& domains, DeepGuide& dg,
+// alone reports progress). Each result depends on its domain only; one that
+// reaches far (reaches_far) has no values: the tiles fill it.
+std::vector<DomainResult> solve_domains(const Whole& r, const std::vector<Domain>& domains, DeepGuide& dg,
                                         const FillParams& params, double max_distance, int threads,
                                         const ProgressFn& progress) {
   std::vector<DomainResult> results(domains.size());
@@ -163,11 +169,10 @@ std::optional<std::vector<DomainResult>> solve_domains(const Whole& r, const std
   DomainQueue queue(domains, dg);
   std::atomic<std::size_t> done{0};
   std::atomic<bool> cancel{false};
-  std::atomic<bool> far{false};
   const ProgressFn worker_progress = [&cancel](double) { return !cancel.load(std::memory_order_relaxed); };
   const auto work = [&](bool main) {
     std::size_t i = 0;
-    for (bool may_defer = false; !far && queue.next(i, may_defer);) {
+    for (bool may_defer = false; queue.next(i, may_defer);) {
       try {
         // A lone domain is solved on the calling thread with the real progress
         // and every thread inside its solver.
@@ -175,7 +180,6 @@ std::optional<std::vector<DomainResult>> solve_domains(const Whole& r, const std
         const ProgressFn& p = main && lone ? progress : worker_progress;
         results[i] =
             solve_domain(r, domains[i], dg, may_defer, params, max_distance, p, lone ? threads : 1);
-        if (reaches_far(results[i].farthest)) far = true;
       } catch (const GuideBusy&) {
         queue.defer(i);
         continue;
@@ -207,11 +211,10 @@ std::optional<std::vector<DomainResult>> solve_domains(const Whole& r, const std
   if (mine) std::rethrow_exception(mine);
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
-  if (far) return std::nullopt;
   return results;
 }
 
-// The raster as read, for the tiles when a void reaches far: read from memory,
+// The raster as read, for the line cells and the tiles: read from memory,
 // written through to the caller's raster.
 RasterAccess in_memory(const Whole& r, const RasterAccess& raster) {
   RasterAccess a;
@@ -225,21 +228,42 @@ RasterAccess in_memory(const Whole& r, const RasterAccess& raster) {
     }
   };
   a.write = raster.write;
+  a.lines = raster.lines;
   return a;
 }
 
-// The filled cells into r.z, the write mask into r.valid; returns the cells to write.
-std::size_t gather(Whole& r, const std::vector<Domain>& domains, const std::vector<DomainResult>& results) {
+// in_memory, writing only the cells flagged in `only`.
+RasterAccess in_memory_far(const Whole& r, const RasterAccess& raster, const std::vector<std::uint8_t>& only) {
+  RasterAccess a = in_memory(r, raster);
+  a.write = [&r, &raster, &only](int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
+    std::vector<std::uint8_t> m(mask, mask + static_cast<std::size_t>(w) * h);
+    bool any = false;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        std::uint8_t& c = m[static_cast<std::size_t>(y) * w + x];
+        c = c && only[r.index(x0 + x, y0 + y)];
+        any = any || c;
+      }
+    if (any) raster.write(x0, y0, w, h, z, m.data());
+  };
+  return a;
+}
+
+// The filled cells into z, the write mask into mask (the domains that reach
+// far have none: they are the tiles'); returns the cells to write.
+std::size_t gather(const Whole& r, const std::vector<Domain>& domains, const std::vector<DomainResult>& results,
+                   std::vector<double>& z, std::vector<std::uint8_t>& mask) {
   std::size_t written = 0;
-  std::fill(r.valid.begin(), r.valid.end(), std::uint8_t{0});
+  mask.assign(r.valid.size(), 0);
   for (std::size_t k = 0; k < domains.size(); ++k) {
+    if (results[k].values.empty()) continue;
     std::size_t n = 0;
     for (const VoidRun& run : domains[k].runs)
       for (int x = run.x0; x < run.x1; ++x, ++n) {
         const std::size_t i = r.index(x, run.y);
-        r.z[i] = results[k].values[n];
-        r.valid[i] = results[k].write[n];
-        written += r.valid[i];
+        z[i] = results[k].values[n];
+        mask[i] = results[k].write[n];
+        written += mask[i];
       }
   }
   return written;
@@ -280,24 +304,52 @@ void fill_whole_raster(const RasterAccess& raster, const FillParams& params, con
 
   FillParams p = params;
   if (p.noise_unit <= 0) p.noise_unit = hi - lo;
+  if (!raster.lines.empty()) r.lines = morph::line_cells(in_memory(r, raster));
   const std::vector<Domain> domains = find_domains(r);
+  if (p.morph.channels) {
+    if (p.morph.min_inflow <= 0) p.morph.min_inflow = default_channel_cells(st.known_cells);
+    // The drainage into the voids, once for the whole raster when the
+    // fields together are larger than it (many voids, overlapping fields),
+    // else in each field (a few voids in a large raster).
+    std::size_t field_cells = 0;
+    for (const Domain& d : domains) field_cells += static_cast<std::size_t>(d.rect.width()) * d.rect.height();
+    if (field_cells > cells) r.inflow = morph::inflow_into_voids(r.z.data(), r.valid.data(), r.w, r.h);
+  }
   const int threads = effective_threads(tiling.threads);
   DeepGuide dg(r, p, threads);
   report(progress, 0.05);
-  const std::optional<std::vector<DomainResult>> results =
+  const std::vector<DomainResult> results =
       solve_domains(r, domains, dg, p, tiling.max_distance, threads, sub_progress(progress, 0.05, 0.95));
-  if (!results) {
+  st.guide_stride = dg.stride_if_built();
+  std::vector<double> z = r.z;
+  std::vector<std::uint8_t> mask;
+  st.cells_written = gather(r, domains, results, z, mask);
+  std::vector<std::uint8_t> far(cells, 0);  // the cells of the voids that reach far
+  bool any_far = false;
+  for (std::size_t k = 0; k < domains.size(); ++k) {
+    if (!results[k].values.empty()) continue;
+    any_far = true;
+    for (const VoidRun& run : domains[k].runs) std::fill_n(far.begin() + r.index(run.x0, run.y), run.x1 - run.x0, 1);
+  }
+  report(progress, any_far ? 0.5 : 0.95);  // a refusal here leaves the raster untouched
+  raster.write(0, 0, r.w, r.h, z.data(), mask.data());
+  if (any_far) {
     // A void reaching far from data needs the guide's tension at a coarse
     // scale and its surface deep inside (one field under tension, solved to
     // the usual tolerance, still carried a coast's slope 2 km up): the tiles
-    // fill the raster as read.
-    tiled_fill(in_memory(r, raster), params, tiling, sub_progress(progress, 0.05, 1.0), hooks);
-    return;
+    // fill it, from the raster as read; the other voids keep their fields' fill.
+    RasterFillStats tiled;
+    RasterFillHooks sub = hooks;
+    sub.stats = &tiled;
+    FillParams plain = params;
+    plain.morph.channels = false;  // the tiles fill without channels
+    tiled_fill(in_memory_far(r, raster, far), plain, tiling, sub_progress(progress, 0.5, 1.0), sub);
+    st.cells_written += tiled.cells_written;
+    st.tile_side = tiled.tile_side, st.tiles_x = tiled.tiles_x, st.tiles_y = tiled.tiles_y;
+    st.windows_solved = tiled.windows_solved, st.small_components = tiled.small_components;
+    st.guide_stride = tiled.guide_stride;
+    st.channels_skipped = tiled.channels_skipped;
   }
-  st.guide_stride = dg.stride_if_built();
-  st.cells_written = gather(r, domains, *results);
-  report(progress, 0.95);  // a refusal here leaves the raster untouched
-  raster.write(0, 0, r.w, r.h, r.z.data(), r.valid.data());
   if (hooks.stats) *hooks.stats = st;
   report(progress, 1.0);
 }

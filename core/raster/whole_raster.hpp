@@ -24,9 +24,10 @@ constexpr int kMinGuideStride = 4;
 
 // Fills `raster` whole: one read, one solve per void component, one write of
 // the void cells (within max_distance of a known cell when that is > 0,
-// measured exactly). When a void cell lies so far from data that the coarse
-// guide's tension is needed (reaches_far), nothing is written by this path:
-// the raster, as read, goes to the tiles (tiles/tiled_fill.hpp).
+// measured exactly). A void with a cell so far from data that the coarse
+// guide's tension is needed (reaches_far) is left to the tiles
+// (tiles/tiled_fill.hpp), which fill it from the raster as read; the other
+// voids keep their own fields' fill.
 // Pre: fills_whole(width, height, params, tiling). Throws as fill_raster.
 void fill_whole_raster(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
                        const ProgressFn& progress, const RasterFillHooks& hooks);

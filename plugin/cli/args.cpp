@@ -14,7 +14,7 @@ const std::map<std::string, std::string>& option_flags() {
   static const std::map<std::string, std::string> table = {
       {"-md", "MAX_DISTANCE"}, {"-method", "METHOD"}, {"-delta", "DELTA"}, {"-I", "I"},
       {"-Ibu", "I_BU"},        {"-H", "H"},           {"-rt", "RT"},       {"-rs", "RS"},
-      {"-seed", "SEED"},       {"-tile", "TILE_SIZE"}, {"-threads", "NUM_THREADS"},
+      {"-seed", "SEED"},       {"-morph", "MORPH"},       {"-rivers", "RIVERS"},  {"-ridges", "RIDGES"},       {"-tile", "TILE_SIZE"}, {"-threads", "NUM_THREADS"},
   };
   return table;
 }

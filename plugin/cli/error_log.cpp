@@ -1,6 +1,10 @@
 #include "cli/error_log.hpp"
 
+#include <cstdio>
+#include <cstring>
+
 #include "cpl_error.h"
+#include "lib/errors.hpp"
 
 namespace mcmd::cli {
 
@@ -9,7 +13,11 @@ ErrorLog::ErrorLog() { CPLPushErrorHandlerEx(&ErrorLog::handler, this); }
 ErrorLog::~ErrorLog() { CPLPopErrorHandler(); }
 
 void CPL_STDCALL ErrorLog::handler(CPLErr err_class, CPLErrorNum /*err_no*/, const char* msg) {
-  if (err_class < CE_Failure) return;  // warnings and debug output stay quiet
+  if (err_class == CE_Warning && msg && std::strncmp(msg, gdal::kWarningPrefix, std::strlen(gdal::kWarningPrefix)) == 0) {
+    std::fprintf(stderr, "mcmd_fillnodata: warning: %s\n", msg + std::strlen(gdal::kWarningPrefix));
+    return;
+  }
+  if (err_class < CE_Failure) return;  // GDAL's warnings and debug output stay quiet
   auto* self = static_cast<ErrorLog*>(CPLGetErrorHandlerUserData());
   if (self->failures_++ == 0 && msg) self->first_ = msg;
 }

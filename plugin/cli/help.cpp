@@ -71,7 +71,30 @@ Shape of the fill (what it does to the terrain):
   -seed n          Seed of the random relief (default 0). The same seed gives
                    bit-identical output; the relief at a cell depends only on
                    (seed, cell position), not on tiling or threads.
-  -o NAME=VALUE    Any other MCMDFillNodata option, e.g. -o RIDGE_I=2.
+  -o NAME=VALUE    Any other MCMDFillNodata option, e.g. -o MORPH_CHANNEL=500.
+
+Morphology (valleys and ridges through the voids; docs/morphology.md):
+  -morph auto      Route the known terrain's drainage through each void: a
+                   valley that enters a void leaves it downstream, at its
+                   outlet, falling all the way (no dam, no pond upstream), and
+                   no filled cell is left in a closed depression. For
+                   hydrology (streams, watersheds, flood models). Default
+                   none. -o MORPH_CHANNEL=N: cells that must drain into a void
+                   to make a channel through it (default 0.1 % of the known
+                   cells, at most 2000).
+  -rivers file     River lines: vector lines in any OGR format (reprojected to
+                   the raster's CRS) or a raster mask on the raster's grid
+                   (nonzero = river). Where a line crosses a void its cells
+                   fall steadily from where it enters to where it leaves (or
+                   take the lines' Z), and water runs along them.
+  -ridges file     Ridge lines, likewise: the crest of the fill where they
+                   cross a void.
+                   With the paper methods, river and ridge cells take their own
+                   -o RIVER_I / RIVER_I_BU / RIDGE_I / RIDGE_I_BU (the paper's
+                   shape parameters); with the default method RIVER_I and
+                   RIDGE_I (-100..100) shape the cross-profile within 8 cells
+                   of the line: > 0 a flat-floored valley, a rounded crest;
+                   < 0 a V valley, a sharp crest; 0 (default) the fill's own.
 
 Performance (with -method mcmd a band of up to 2^21 cells is filled whole, one
 field per void; a larger one, or a paper method, is streamed through square

@@ -33,6 +33,10 @@ class BandAccess {
   // Valid while this object lives. read/write throw Failure on I/O errors.
   RasterAccess access();
 
+  GDALDataType source_type() const { return source_.GetRasterDataType(); }
+  // The source band's dataset (its georeferencing), or null.
+  GDALDataset* source_dataset() const { return source_.GetDataset(); }
+
   // Whether the nodata value marks voids (besides NaN and masks).
   bool nodata_marks_voids() const;
 

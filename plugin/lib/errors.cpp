@@ -14,6 +14,8 @@ void check_io(CPLErr err, const char* what) {
   }
 }
 
+void warn(const std::string& msg) { CPLError(CE_Warning, CPLE_AppDefined, "%s%s", kWarningPrefix, msg.c_str()); }
+
 void report_current_exception() {
   try {
     throw;

@@ -22,6 +22,11 @@ class Failure : public std::runtime_error {
 // err is CE_None: the one form of every band read or write failure.
 void check_io(CPLErr err, const char* what);
 
+// A warning for the user (not an error): CPLError(CE_Warning) with the text
+// prefixed by kWarningPrefix, which the CLI prints as its own warning line.
+constexpr const char* kWarningPrefix = "mcmd: ";
+void warn(const std::string& msg);
+
 // Run `body`, turning every exception into one CPLError(CE_Failure, ...).
 // Returns CE_None when body returns normally.
 template <class Body>

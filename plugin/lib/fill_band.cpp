@@ -7,6 +7,7 @@
 #include "lib/band_access.hpp"
 #include "lib/band_window.hpp"
 #include "lib/errors.hpp"
+#include "lib/line_input.hpp"
 #include "mcmd/fill_raster.hpp"
 
 namespace mcmd::gdal {
@@ -25,6 +26,32 @@ void fail_unmarked(const FillRequest& r) {
 
 void fail_no_valid(const FillRequest& r) {
   throw Failure(CPLE_AppDefined, band_name(r) + " has no valid cell: nothing to fill from");
+}
+
+// The options' fill parameters for this band: an integer band's values are
+// whole units (FillParams::z_step).
+FillParams params_for(const Options& options, BandAccess& band) {
+  FillParams p = options.fill;
+  if (GDALDataTypeIsInteger(band.source_type()) && !GDALDataTypeIsComplex(band.source_type())) p.z_step = 1.0;
+  return p;
+}
+
+// The ridge and river lines of the options, on the source's grid; a warning
+// when a file's lines all miss the raster.
+std::vector<Line> lines_of(const Options& options, GDALDataset* source) {
+  std::vector<Line> lines;
+  const std::pair<const std::string*, CellState> files[] = {{&options.rivers, CellState::river},
+                                                           {&options.ridges, CellState::ridge}};
+  for (const auto& [path, kind] : files) {
+    if (path->empty()) continue;
+    if (!source) throw Failure(CPLE_AppDefined, "lines need a band that belongs to a dataset (for its georeferencing)");
+    std::vector<Line> read = read_lines(*path, kind, *source);
+    if (lines_inside(read, source->GetRasterXSize(), source->GetRasterYSize()) == 0)
+      warn("the " + std::string(kind == CellState::ridge ? "ridge" : "river") + " lines of '" + *path +
+           "' do not cross the raster: filled without them");
+    lines.insert(lines.end(), read.begin(), read.end());
+  }
+  return lines;
 }
 
 }  // namespace
@@ -55,6 +82,8 @@ namespace {
 void fill_band_access(BandAccess& band, const FillRequest& request, const Options& options,
                       const ProgressFn& progress) {
   const TilingParams tiling = tiling_of(options);
+  RasterAccess access = band.access();
+  access.lines = lines_of(options, band.source_dataset());
   RasterFillStats stats;
   RasterFillHooks hooks;
   hooks.stats = &stats;
@@ -64,12 +93,17 @@ void fill_band_access(BandAccess& band, const FillRequest& request, const Option
   // report (before it writes a one-tile raster) leaves the band untouched.
   const ProgressFn capped = sub_progress(progress, 0.0, 0.99);
   try {
-    fill_raster(band.access(), options.fill, tiling, capped, hooks);
+    fill_raster(access, params_for(options, band), tiling, capped, hooks);
   } catch (const std::invalid_argument&) {
     // Checked after the first pass, before anything is written.
     if (stats.void_cells > 0 && stats.known_cells == 0) fail_no_valid(request);
     throw;
   }
+  if (stats.channels_skipped)
+    warn(std::string("-morph auto routed no channel through ") +
+         (stats.tile_side > 0 && stats.known_cells + stats.void_cells > (std::size_t{1} << 21)
+              ? "this raster: it is filled through tiles (more than 2^21 cells, a paper method or TILING=ALWAYS)"
+              : "the voids that reach far from data (they are filled through tiles)"));
   // Nothing was written when no cell is void.
   if (request.require_void_marker && !marked && stats.void_cells == 0) fail_unmarked(request);
   band.complete();

@@ -87,6 +87,11 @@ void set_roughness(FillParams& f, const std::string& name, const std::string& va
   f.noise_unit = 0.0;
 }
 
+std::string path_of(const std::string& name, const std::string& value) {
+  if (value.empty()) fail(name, value, "a file name");
+  return value;
+}
+
 // |I| beyond this makes Δ a step function: surely a typo.
 constexpr double kMaxShape = 100.0;
 
@@ -112,6 +117,15 @@ const std::map<std::string, Setter>& setters() {
       {"RT", [](Options& o, auto& n, auto& v) { o.fill.rt = number_in(n, v, -1.0, 1.0); }},
       {"RS", [](Options& o, auto& n, auto& v) { set_roughness(o.fill, n, v); }},
       {"SEED", [](Options& o, auto& n, auto& v) { o.fill.seed = unsigned_integer(n, v); }},
+      {"MORPH",
+       [](Options& o, auto& n, auto& v) {
+         const std::string m = upper(v);
+         if (m != "NONE" && m != "AUTO") fail(n, v, "none or auto");
+         o.fill.morph.channels = m == "AUTO";
+       }},
+      {"MORPH_CHANNEL", [](Options& o, auto& n, auto& v) { o.fill.morph.min_inflow = number_in(n, v, 1.0, 1e15); }},
+      {"RIVERS", [](Options& o, auto& n, auto& v) { o.rivers = path_of(n, v); }},
+      {"RIDGES", [](Options& o, auto& n, auto& v) { o.ridges = path_of(n, v); }},
       {"MAX_DISTANCE",
        [](Options& o, auto& n, auto& v) { o.max_distance = number_in(n, v, 0.0, 1e12); }},
       {"TILE_SIZE",
@@ -143,8 +157,8 @@ const std::map<std::string, Setter>& setters() {
 }  // namespace
 
 const char* option_names() {
-  return "METHOD, DELTA, I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT, RS, SEED, "
-         "MAX_DISTANCE, TILE_SIZE, TILING, NUM_THREADS";
+  return "METHOD, DELTA, I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT, RS, SEED, MORPH, "
+         "MORPH_CHANNEL, RIVERS, RIDGES, MAX_DISTANCE, TILE_SIZE, TILING, NUM_THREADS";
 }
 
 TilingParams tiling_of(const Options& o) {

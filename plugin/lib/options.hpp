@@ -22,6 +22,8 @@ struct Options {
   int tile_size = 0;          // 2^n+1 cells; 0 = automatic (mcmd::TilingParams::tile_side)
   bool always_tile = false;   // TILING=ALWAYS (mcmd::TilingParams::always_tile)
   int num_threads = 0;        // 0 = all CPUs
+  std::string rivers;         // RIVERS=: a file of river lines (lib/line_input.hpp); "" = none
+  std::string ridges;         // RIDGES=: likewise, ridge lines
 };
 
 // The raster engine's tiling parameters of `o`.

@@ -2,6 +2,7 @@
 // roughness. A leaf header: every layer of the core and the plugin read it.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "mcmd/cell_state.hpp"
@@ -27,6 +28,23 @@ struct StateShape {
   double I_bu = 0.0;  // bottom-up (MDBU) interpolation shape
 };
 
+// Morphology of the fill (-morph auto): the known terrain's drainage routed
+// through the voids as river cells (core/morphology/channels.hpp).
+struct MorphParams {
+  bool channels = false;
+  // Cells of known terrain draining into a void that make a channel there;
+  // 0: default_channel_cells.
+  double min_inflow = 0.0;
+};
+
+// 0.1 % of the raster's known cells, at most 2000: the inflows routed on the
+// hydrology benchmark (bench/HYDROLOGY.md), and channels at the scale of a
+// void however large the raster.
+inline double default_channel_cells(std::size_t known_cells) {
+  const double c = 0.001 * static_cast<double>(known_cells);
+  return c < 2000.0 ? c : 2000.0;
+}
+
 struct FillParams {
   Method method = Method::mcmd;
   DeltaForm delta_form = DeltaForm::normalized;
@@ -40,6 +58,10 @@ struct FillParams {
   double noise_unit = 0.0;   // elevation unit of rs; 0 = known elevation range of the grid
   double dmax = 0.0;         // Δ's d_max; 0 = the grid's diagonal
   std::uint64_t seed = 0;
+  MorphParams morph{};
+  // The resolution of the output (1 for integer bands; 0: continuous): a
+  // drop smaller than it would be rounded away (morphology's river banks).
+  double z_step = 0.0;
 };
 
 // The shape parameters that apply to a cell of state `s`.

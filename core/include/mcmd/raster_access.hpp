@@ -8,6 +8,8 @@
 #include <functional>
 #include <vector>
 
+#include "mcmd/lines.hpp"
+
 namespace mcmd {
 
 // The raster, as the caller stores it. Both functions are called only from the
@@ -21,6 +23,8 @@ struct RasterAccess {
   std::function<void(int x0, int y0, int w, int h, double* z, std::uint8_t* valid)> read;
   // Write the cells of that rectangle where mask is set (void cells being filled).
   std::function<void(int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask)> write;
+  // Ridge and river lines drawn on the raster (mcmd/lines.hpp); may be empty.
+  std::vector<Line> lines;
 };
 
 struct TilingParams {
@@ -45,6 +49,7 @@ struct RasterFillStats {
   std::size_t known_cells = 0;
   std::size_t void_cells = 0;
   std::size_t cells_written = 0;
+  bool channels_skipped = false;   // -morph auto's channels not routed (the voids went to tiles)
 };
 
 // Test hooks: permute the order in which windows are computed (their results

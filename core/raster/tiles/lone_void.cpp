@@ -52,7 +52,8 @@ ComponentGrid component_grid(const Box& box, int width, int height) {
 
 std::vector<double> solve_component(const SmallComponent& c, const ComponentGrid& g, int width, int height,
                                     const double* z, const std::uint8_t* valid, const CoarseGuide& guide,
-                                    double radius, const FillParams& params, const ProgressFn& progress) {
+                                    double radius, const FillParams& params, const ProgressFn& progress,
+                                    const std::vector<morph::LineCell>& lines) {
   const ReadRect& rect = g.rect;
   const std::size_t rw = static_cast<std::size_t>(rect.w);
   // The component's cells within the read rectangle.
@@ -96,6 +97,7 @@ std::vector<double> solve_component(const SmallComponent& c, const ComponentGrid
       gs[i] = CellState::known;
     }
   }
+  morph::place_line_cells(grid, lines);
   fill_grid(grid, params, progress);
 
   std::vector<double> out;

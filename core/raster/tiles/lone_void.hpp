@@ -12,6 +12,7 @@
 #include "common/grid.hpp"
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
+#include "morphology/lines.hpp"
 #include "raster/coarse_guide.hpp"
 #include "raster/tiles/tile_layout.hpp"
 #include "raster/tiles/tile_window.hpp"
@@ -42,6 +43,7 @@ ComponentGrid component_grid(const Box& box, int width, int height);
 // cells, run after run.
 std::vector<double> solve_component(const SmallComponent& c, const ComponentGrid& g, int width, int height,
                                     const double* z, const std::uint8_t* valid, const CoarseGuide& guide,
-                                    double radius, const FillParams& params, const ProgressFn& progress);
+                                    double radius, const FillParams& params, const ProgressFn& progress,
+                                    const std::vector<morph::LineCell>& lines = {});
 
 }  // namespace mcmd::detail

@@ -92,9 +92,10 @@ JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job&
   JobResult r;
   if (job.component) {
     r.values = solve_component(plan.small[job.index], in.grid, raster.width, raster.height, in.window.z.data(),
-                               in.window.valid.data(), plan.guide, plan.radius, plan.params, progress);
+                               in.window.valid.data(), plan.guide, plan.radius, plan.params, progress, plan.lines);
   } else {
-    r.window = solve_window(plan.layout, in.window, plan.guide_or_null(), plan.params, max_distance, progress);
+    r.window =
+        solve_window(plan.layout, in.window, plan.guide_or_null(), plan.params, max_distance, progress, plan.lines);
     plan.small_runs.mask(r.window);
   }
   return r;

@@ -75,8 +75,12 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
   if (scan.voids == 0) return false;
   if (scan.known == 0) throw std::invalid_argument("the raster has no known cell to fill from");
 
+  if (!raster.lines.empty()) plan.lines = morph::line_cells(raster);
   // One noise unit for every window, so displacement amplitudes agree across seams.
   plan.params = params;
+  // Channels are routed in the fields of rasters filled whole (whole_raster.hpp).
+  stats.channels_skipped = params.morph.channels;
+  plan.params.morph.channels = false;
   if (plan.params.noise_unit <= 0) plan.params.noise_unit = scan.hi - scan.lo;
   if (!plan.single) {
     plan.guide.solve(plan.params, sub_progress(progress, 2.0 / 3, 1.0), effective_threads(tiling.threads));

@@ -9,6 +9,7 @@
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
 #include "mcmd/raster_access.hpp"
+#include "morphology/lines.hpp"
 #include "raster/coarse_guide.hpp"
 #include "raster/tiles/tile_layout.hpp"
 #include "raster/tiles/tile_window.hpp"
@@ -42,6 +43,7 @@ struct TilePlan {
   double radius = 0.0;  // guide radius (tile_window.hpp); 0 without a guide
   std::vector<SmallComponent> small;  // solved alone (lone_void.hpp)
   RunIndex small_runs;
+  std::vector<morph::LineCell> lines;  // the raster's line cells in voids (morphology/lines.hpp)
   std::vector<Job> jobs;  // the small components in order of their first cell, then tiles row-major
   const CoarseGuide* guide_or_null() const { return single ? nullptr : &guide; }
 };

@@ -42,7 +42,8 @@ ReadRect window_read_rect(const TileLayout& layout, int tx, int ty) {
 }
 
 WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const CoarseGuide* guide,
-                          const FillParams& params, double max_distance, const ProgressFn& progress) {
+                          const FillParams& params, double max_distance, const ProgressFn& progress,
+                          const std::vector<morph::LineCell>& lines) {
   const int ox = layout.x.window_origin(in.tx);
   const int oy = layout.y.window_origin(in.ty);
   Grid grid(layout.window_levels(), ox, oy);
@@ -91,6 +92,7 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
       }
     }
   }
+  morph::place_line_cells(grid, lines);
   if (grid.count(CellState::unknown) > 0) fill_grid(grid, params, progress);
 
   WindowResult r;

@@ -15,6 +15,7 @@
 #include "common/grid.hpp"
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
+#include "morphology/lines.hpp"
 #include "raster/coarse_guide.hpp"
 #include "raster/tiles/blend.hpp"
 #include "raster/tiles/tile_layout.hpp"
@@ -51,7 +52,9 @@ int exact_distance_limit(const TileLayout& layout);
 // cell within max_distance in the window is decided by the guide's
 // coarse_distance (prepare_distance() must have been called).
 // Throws Cancelled (from progress), std::invalid_argument (no constraint).
+// Line cells (morphology/lines.hpp; may be empty) become ridge and river cells.
 WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const CoarseGuide* guide,
-                          const FillParams& params, double max_distance, const ProgressFn& progress = {});
+                          const FillParams& params, double max_distance, const ProgressFn& progress = {},
+                          const std::vector<morph::LineCell>& lines = {});
 
 }  // namespace mcmd

@@ -1,0 +1,53 @@
+// The default method's fill of a void's field with its morphology: ridge and
+// river lines (lines.hpp) and, with -morph auto, the channels routed through
+// the void (channels.hpp). The smooth fill first, then the fill again with
+// the line and channel cells as constraints (roughness included), the
+// cross-profiles around the lines shaped, and the void's cells drained (no
+// closed depression left in them).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mcmd/params.hpp"
+#include "mcmd/progress.hpp"
+#include "thin_plate/thin_plate.hpp"
+
+namespace mcmd::morph {
+
+// A line cell of the field (field index), with its height (NaN: the smooth
+// fill's there).
+struct FieldLineCell {
+  std::int32_t cell = 0;
+  CellState kind = CellState::river;
+  double z = 0.0;
+};
+
+// Half-width, in cells, of the band around a line whose cross-profile the
+// default method shapes (shape_profiles).
+constexpr int kProfileHalfWidth = 8;
+
+// `field` as thin_plate_with_roughness takes it; `own` flags the void's
+// cells (the routed and drained ones); `inflow` (null: no channels) the
+// known terrain's accumulation draining into the void per cell; `lines` the
+// line cells inside the field's voids. Pre: own and inflow hold w·h entries.
+// Post: constraint cells unchanged; every unknown cell filled; with
+// channels or river lines, no own cell in a closed depression of the field.
+void fill_with_morphology(const FieldView& field, long long x0, long long y0, const std::uint8_t* own,
+                          const double* inflow, const std::vector<FieldLineCell>& lines, const FillParams& params,
+                          const ThinPlateSchedule& schedule, const ProgressFn& progress = {});
+
+// The cross-profiles within kProfileHalfWidth cells of the line cells, at
+// the unknown cells of `state`: with u = d / kProfileHalfWidth (d: the
+// distance to the nearest line cell, of height z_l), z ← z_l + (z − z_l)·φ(u),
+// φ(u) = u^q for q >= 0 (q > 0: the cells near the line drawn towards it, a
+// flat-floored valley or a rounded crest) and 2 − u^|q| for q < 0 (pushed
+// away: a V valley or a sharp crest), q = I / 25 of the line's state
+// (FillParams::river_shape, ridge_shape). Then within the band a river is
+// the bottom and a ridge the top: a cell d cells away is kept at least
+// step·d above a river (so that water runs along it, not beside it) and
+// below a ridge. Pre: z, state hold w·h cells.
+void shape_profiles(double* z, const CellState* state, int w, int h, const std::vector<FieldLineCell>& lines,
+                    const FillParams& params, double step);
+
+}  // namespace mcmd::morph

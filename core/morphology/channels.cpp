@@ -1,0 +1,241 @@
+#include "morphology/channels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <tuple>
+
+#include "morphology/flow.hpp"
+
+namespace mcmd::morph {
+
+namespace {
+
+constexpr double kCostSteepness = 8.0;
+constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+
+struct Geometry {
+  int w, h;
+  bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < w && y < h; }
+  double distance(std::int32_t a, std::int32_t b) const {
+    return std::hypot(static_cast<double>(a % w - b % w), static_cast<double>(a / w - b / w));
+  }
+};
+
+// Constraint cells 8-adjacent to a cell of the component.
+std::vector<std::int32_t> rim_cells(const ChannelField& f) {
+  std::vector<std::int32_t> rim;
+  for (int y = 0; y < f.h; ++y)
+    for (int x = 0; x < f.w; ++x) {
+      const std::int32_t i = y * f.w + x;
+      if (!is_constraint(f.state[i]) || f.own[i]) continue;
+      bool beside = false;
+      for (int k = 0; k < 8 && !beside; ++k) {
+        const int nx = x + kDx[k], ny = y + kDy[k];
+        beside = nx >= 0 && ny >= 0 && nx < f.w && ny < f.h && f.own[ny * f.w + nx];
+      }
+      if (beside) rim.push_back(i);
+    }
+  return rim;
+}
+
+// The smooth fill's drainage over the box of the component grown by
+// kOutletMargin cells, as field indices: receiver per field cell, -1
+// outside the box.
+constexpr int kOutletMargin = 8;
+std::vector<std::int32_t> fill_drainage(const ChannelField& f) {
+  int x0 = f.w, x1 = -1, y0 = f.h, y1 = -1;
+  for (int y = 0; y < f.h; ++y)
+    for (int x = 0; x < f.w; ++x)
+      if (f.own[static_cast<std::size_t>(y) * f.w + x])
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  std::vector<std::int32_t> out(static_cast<std::size_t>(f.w) * f.h, -1);
+  if (x1 < 0) return out;
+  x0 = std::max(0, x0 - kOutletMargin), y0 = std::max(0, y0 - kOutletMargin);
+  x1 = std::min(f.w - 1, x1 + kOutletMargin), y1 = std::min(f.h - 1, y1 + kOutletMargin);
+  const int bw = x1 - x0 + 1, bh = y1 - y0 + 1;
+  std::vector<double> z(static_cast<std::size_t>(bw) * bh);
+  for (int y = 0; y < bh; ++y) std::copy_n(f.z + static_cast<std::size_t>(y0 + y) * f.w + x0, bw, z.begin() + y * bw);
+  const std::vector<FlowCell> land(z.size(), FlowCell::land);
+  const Flow flow = route(z.data(), bw, bh, land.data());
+  for (int y = 0; y < bh; ++y)
+    for (int x = 0; x < bw; ++x) {
+      const std::int32_t r = flow.receiver[static_cast<std::size_t>(y) * bw + x];
+      if (r >= 0) out[static_cast<std::size_t>(y0 + y) * f.w + x0 + x] = (y0 + r / bw) * f.w + x0 + r % bw;
+    }
+  return out;
+}
+
+// Where the smooth fill's drainage from `start` first leaves the component
+// after entering it; -1 when it never enters or ends inside.
+std::int32_t fill_outlet(const std::vector<std::int32_t>& receiver, const ChannelField& f, std::int32_t start) {
+  std::int32_t p = receiver[start];
+  if (p < 0 || !f.own[p]) return -1;
+  while (p >= 0 && f.own[p]) p = receiver[p];
+  return p;
+}
+
+// Least-squares non-increasing fit of v (pool adjacent violators).
+std::vector<double> non_increasing_fit(const std::vector<double>& v) {
+  std::vector<double> mean;
+  std::vector<std::size_t> count;
+  for (double x : v) {
+    mean.push_back(x);
+    count.push_back(1);
+    while (mean.size() > 1 && mean[mean.size() - 2] < mean.back()) {
+      const std::size_t a = count[count.size() - 2], b = count.back();
+      const double m = (mean[mean.size() - 2] * a + mean.back() * b) / static_cast<double>(a + b);
+      mean.pop_back();
+      count.pop_back();
+      mean.back() = m;
+      count.back() = a + b;
+    }
+  }
+  std::vector<double> out;
+  for (std::size_t k = 0; k < mean.size(); ++k) out.insert(out.end(), count[k], mean[k]);
+  return out;
+}
+
+class Router {
+ public:
+  Router(const ChannelField& f) : f_(f), g_{f.w, f.h}, river_(static_cast<std::size_t>(f.w) * f.h, -1.0) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < river_.size(); ++i)
+      if (f.own[i]) lo = std::min(lo, f.z[i]), hi = std::max(hi, f.z[i]);
+    cost_.assign(river_.size(), 0.0);
+    const double range = std::max(hi - lo, 1e-9);
+    for (std::size_t i = 0; i < river_.size(); ++i)
+      if (f.own[i]) cost_[i] = std::exp(kCostSteepness * std::min(1.0, (f.z[i] - lo) / range));
+    on_river_.assign(river_.size(), 0);
+  }
+
+  // Routes `from` (a rim cell) to `to` (a rim cell), stopping at a river cell.
+  void route(std::int32_t from, std::int32_t to) {
+    std::vector<std::int32_t> path = least_cost_path(from, to);
+    if (path.size() < 3) return;
+    std::size_t end = path.size() - 1;
+    for (std::size_t k = 1; k + 1 < path.size(); ++k)
+      if (on_river_[path[k]]) {
+        end = k;
+        break;
+      }
+    path.resize(end + 1);
+    const double top = f_.z[from];
+    double bottom = on_river_[path.back()] ? river_[path.back()] : f_.z[path.back()];
+    if (!(bottom < top)) return;  // no fall: nothing drains this way
+    set_heights(path, top, bottom);
+  }
+
+  std::vector<RiverCell> cells() const {
+    std::vector<RiverCell> out;
+    for (std::size_t i = 0; i < river_.size(); ++i)
+      if (on_river_[i]) out.push_back({static_cast<std::int32_t>(i), river_[i]});
+    return out;
+  }
+
+ private:
+  std::vector<std::int32_t> least_cost_path(std::int32_t from, std::int32_t to) const {
+    using Entry = std::pair<double, std::int32_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+    std::vector<double> dist(river_.size(), std::numeric_limits<double>::infinity());
+    std::vector<std::int32_t> prev(river_.size(), -1);
+    const auto step_cost = [&](std::int32_t a, std::int32_t b, int k) {
+      const double ca = f_.own[a] ? cost_[a] : 1.0, cb = f_.own[b] ? cost_[b] : 1.0;
+      return (k % 2 ? M_SQRT2 : 1.0) * 0.5 * (ca + cb);
+    };
+    dist[from] = 0.0;
+    open.emplace(0.0, from);
+    while (!open.empty()) {
+      const auto [d, i] = open.top();
+      open.pop();
+      if (d > dist[i]) continue;
+      if (i == to) break;
+      const int x = i % f_.w, y = i / f_.w;
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + kDx[k], ny = y + kDy[k];
+        if (!g_.inside(nx, ny)) continue;
+        const std::int32_t j = ny * f_.w + nx;
+        if (!f_.own[j] && j != to) continue;
+        const double nd = d + step_cost(i, j, k);
+        if (nd < dist[j]) dist[j] = nd, prev[j] = i, open.emplace(nd, j);
+      }
+    }
+    std::vector<std::int32_t> path;
+    if (prev[to] < 0) return path;
+    for (std::int32_t p = to; p >= 0; p = p == from ? -1 : prev[p]) path.push_back(p);
+    std::reverse(path.begin(), path.end());
+    return path;
+  }
+
+  // Heights from top (path[0]) to bottom (path.back()): the mean of the
+  // straight fall along the path and the fill's non-increasing fit.
+  void set_heights(const std::vector<std::int32_t>& path, double top, double bottom) {
+    std::vector<double> along(path.size(), 0.0);
+    for (std::size_t k = 1; k < path.size(); ++k) along[k] = along[k - 1] + g_.distance(path[k - 1], path[k]);
+    std::vector<double> fill(path.size());
+    for (std::size_t k = 0; k < path.size(); ++k) fill[k] = f_.z[path[k]];
+    fill.front() = top;
+    fill.back() = bottom;
+    std::vector<double> fit = non_increasing_fit(fill);
+    for (std::size_t k = 1; k + 1 < path.size(); ++k) {
+      const double straight = top + (bottom - top) * along[k] / along.back();
+      const double z = 0.5 * (straight + std::clamp(fit[k], bottom, top));
+      const std::int32_t c = path[k];
+      if (!f_.own[c]) continue;
+      river_[c] = on_river_[c] ? std::min(river_[c], z) : z;
+      on_river_[c] = 1;
+    }
+  }
+
+  const ChannelField& f_;
+  Geometry g_;
+  std::vector<double> river_;
+  std::vector<std::uint8_t> on_river_;
+  std::vector<double> cost_;
+};
+
+}  // namespace
+
+std::vector<double> inflow_into_voids(const double* z, const std::uint8_t* valid, int w, int h) {
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  std::vector<FlowCell> kind(n);
+  for (std::size_t i = 0; i < n; ++i) kind[i] = valid[i] ? FlowCell::land : FlowCell::sink;
+  const Flow flow = route(z, w, h, kind.data());
+  std::vector<double> a = accumulation(flow, kind.data());
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t r = flow.receiver[i];
+    if (kind[i] != FlowCell::land || r < 0 || kind[r] != FlowCell::sink) a[i] = 0.0;
+  }
+  return a;
+}
+
+std::vector<RiverCell> route_channels(const ChannelField& f, double min_inflow) {
+  const std::vector<std::int32_t> rim = rim_cells(f);
+  std::vector<std::int32_t> inflows;
+  for (const std::int32_t c : rim)
+    if (f.inflow[c] >= min_inflow && f.inflow[c] > 0) inflows.push_back(c);
+  if (inflows.empty()) return {};
+  std::stable_sort(inflows.begin(), inflows.end(),
+                   [&](std::int32_t a, std::int32_t b) { return f.inflow[a] > f.inflow[b]; });
+  const std::int32_t lowest =
+      *std::min_element(rim.begin(), rim.end(), [&](std::int32_t a, std::int32_t b) { return f.z[a] < f.z[b]; });
+  std::size_t own_cells = 0;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(f.w) * f.h; ++i) own_cells += f.own[i] ? 1 : 0;
+  const double radius = std::sqrt(static_cast<double>(own_cells) / M_PI);
+  const std::vector<std::int32_t> drainage = fill_drainage(f);
+  const Geometry g{f.w, f.h};
+  Router router(f);
+  for (const std::int32_t in : inflows) {
+    std::int32_t out = lowest;
+    const std::int32_t fill_out = fill_outlet(drainage, f, in);
+    if (fill_out >= 0 && f.z[fill_out] < f.z[in] && g.distance(fill_out, in) > 0.5 * radius) out = fill_out;
+    if (out == in || !(f.z[out] < f.z[in])) continue;
+    router.route(in, out);
+  }
+  return router.cells();
+}
+
+}  // namespace mcmd::morph

@@ -1,0 +1,204 @@
+#include "morphology/flow.hpp"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <utility>
+
+#include "morphology/radix_heap.hpp"
+
+namespace mcmd::morph {
+
+namespace {
+
+constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+
+// Calls f(k, neighbour index) for the neighbours of (x, y) inside the field.
+template <class F>
+void for_each_neighbour(int x, int y, int w, int h, F&& f) {
+  for (int k = 0; k < 8; ++k) {
+    const int nx = x + kDx[k], ny = y + kDy[k];
+    if (nx >= 0 && ny >= 0 && nx < w && ny < h) f(k, static_cast<std::int32_t>(ny) * w + nx);
+  }
+}
+
+bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
+
+// A land cell where water can leave: the border, or beside an off or sink cell.
+bool is_seed(int x, int y, int w, int h, const FlowCell* kind) {
+  if (on_border(x, y, w, h)) return true;
+  bool seed = false;
+  for_each_neighbour(x, y, w, h, [&](int, std::int32_t n) { seed = seed || kind[n] != FlowCell::land; });
+  return seed;
+}
+
+}  // namespace
+
+namespace {
+
+// One Priority-Flood: the heap of reached cells at their own height, and
+// the queue of cells raised to the water level (pits and flats: Barnes et
+// al. 2014's pit queue), taken first in the order they were reached, so
+// that most of an integer DEM's flats never enter the heap.
+class Flood {
+ public:
+  Flood(const double* z, int w, int h, const FlowCell* kind, std::vector<std::int32_t>* order,
+        std::vector<std::int32_t>* from)
+      : z_(z), w_(w), h_(h), order_(order), from_(from), level_(cells(), std::numeric_limits<double>::quiet_NaN()),
+        done_(cells()) {
+    // One byte per cell for the neighbour tests, most of which find a cell
+    // already reached (or not land).
+    for (std::size_t i = 0; i < cells(); ++i) done_[i] = kind[i] != FlowCell::land;
+    if (order_) order_->clear(), order_->reserve(cells());
+    if (from_) from_->assign(cells(), -1);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::int32_t i = y * w + x;
+        if (done_[i] || !is_seed(x, y, w, h, kind)) continue;
+        done_[i] = 1;
+        level_[i] = z[i];
+        heap_.push(z[i], i);
+      }
+  }
+
+  std::vector<double> run() && {
+    for (std::int32_t i; next(i);) {
+      if (order_) order_->push_back(i);
+      const double above = std::nextafter(level_[i], std::numeric_limits<double>::infinity());
+      const int x = i % w_, y = i / w_;
+      if (x > 0 && y > 0 && x < w_ - 1 && y < h_ - 1) {  // interior: no bounds tests
+        for (const std::int32_t d : {1, w_ + 1, w_, w_ - 1, -1, -w_ - 1, -w_, -w_ + 1}) reach(i + d, i, above);
+      } else {
+        for_each_neighbour(x, y, w_, h_, [&](int, std::int32_t j) { reach(j, i, above); });
+      }
+    }
+    return std::move(level_);
+  }
+
+ private:
+  std::size_t cells() const { return static_cast<std::size_t>(w_) * h_; }
+
+  bool next(std::int32_t& i) {
+    if (pit_next_ < pit_.size()) {
+      i = pit_[pit_next_++];
+      if (pit_next_ == pit_.size()) pit_.clear(), pit_next_ = 0;
+      return true;
+    }
+    if (heap_.empty()) return false;
+    i = heap_.pop().second;
+    return true;
+  }
+
+  void reach(std::int32_t j, std::int32_t i, double above) {
+    if (done_[j]) return;
+    done_[j] = 1;
+    if (from_) (*from_)[j] = i;
+    if (z_[j] < above) {
+      level_[j] = above;
+      pit_.push_back(j);
+    } else {
+      level_[j] = z_[j];
+      heap_.push(z_[j], j);
+    }
+  }
+
+  const double* z_;
+  int w_, h_;
+  std::vector<std::int32_t>* order_;
+  std::vector<std::int32_t>* from_;
+  std::vector<double> level_;
+  std::vector<std::uint8_t> done_;
+  RadixHeap heap_;
+  std::vector<std::int32_t> pit_;
+  std::size_t pit_next_ = 0;
+};
+
+// A land cell's receiver: the first sink beside it (east, then clockwise),
+// else its steepest lower land neighbour on the flooded levels (diagonals
+// √2 away), else -1 (a seed with no lower neighbour: out of the field).
+std::int32_t receiver_of(std::int32_t i, int x, int y, int w, int h, const FlowCell* kind,
+                         const std::vector<double>& level) {
+  std::int32_t best = -1;
+  double steepest = 0.0;
+  bool beside_sink = false;
+  for_each_neighbour(x, y, w, h, [&](int k, std::int32_t j) {
+    if (beside_sink) return;
+    if (kind[j] == FlowCell::sink) {
+      best = j, beside_sink = true;
+      return;
+    }
+    if (kind[j] != FlowCell::land) return;
+    const double slope = (level[i] - level[j]) * (k % 2 ? M_SQRT1_2 : 1.0);
+    if (slope > steepest) steepest = slope, best = j;
+  });
+  return best;
+}
+
+}  // namespace
+
+std::vector<double> flood_levels(const double* z, int w, int h, const FlowCell* kind,
+                                 std::vector<std::int32_t>* order, std::vector<std::int32_t>* from) {
+  return Flood(z, w, h, kind, order, from).run();
+}
+
+Flow route(const double* z, int w, int h, const FlowCell* kind) {
+  Flow f;
+  f.w = w;
+  f.h = h;
+  const std::vector<double> level = flood_levels(z, w, h, kind, &f.order);
+  f.receiver.assign(static_cast<std::size_t>(w) * h, -1);
+  for (int y = 0; y < h; ++y)  // raster order: the neighbours' levels are near in memory
+    for (int x = 0; x < w; ++x) {
+      const std::int32_t i = y * w + x;
+      if (kind[i] == FlowCell::land) f.receiver[i] = receiver_of(i, x, y, w, h, kind, level);
+    }
+  return f;
+}
+
+std::vector<double> accumulation(const Flow& flow, const FlowCell* kind) {
+  // In topological order (Kahn): a cell once every donor has given.
+  const std::size_t n = flow.receiver.size();
+  std::vector<double> a(n, 0.0);
+  std::vector<std::uint8_t> donors(n, 0);  // at most 8
+  for (const std::int32_t i : flow.order) {
+    a[i] = 1.0;
+    if (const std::int32_t r = flow.receiver[i]; r >= 0) ++donors[r];
+  }
+  std::vector<std::int32_t> ready;
+  for (const std::int32_t i : flow.order)
+    if (donors[i] == 0) ready.push_back(i);
+  while (!ready.empty()) {
+    const std::int32_t i = ready.back();
+    ready.pop_back();
+    const std::int32_t r = flow.receiver[i];
+    if (r < 0 || kind[r] == FlowCell::off) continue;
+    a[r] += a[i];
+    if (--donors[r] == 0 && kind[r] == FlowCell::land) ready.push_back(r);
+  }
+  return a;
+}
+
+void drain(double* z, int w, int h, const std::uint8_t* raisable) {
+  // Over the box of the raisable cells and a ring of one cell, whose cells
+  // are the outlets: a raisable cell drains to the ring at least.
+  int x0 = w, x1 = -1, y0 = h, y1 = -1;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (raisable[static_cast<std::size_t>(y) * w + x])
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  if (x1 < 0) return;
+  x0 = std::max(0, x0 - 1), y0 = std::max(0, y0 - 1), x1 = std::min(w - 1, x1 + 1), y1 = std::min(h - 1, y1 + 1);
+  const int bw = x1 - x0 + 1, bh = y1 - y0 + 1;
+  std::vector<double> box(static_cast<std::size_t>(bw) * bh);
+  for (int y = 0; y < bh; ++y) std::copy_n(z + static_cast<std::size_t>(y0 + y) * w + x0, bw, box.begin() + static_cast<std::size_t>(y) * bw);
+  const std::vector<FlowCell> land(box.size(), FlowCell::land);
+  const std::vector<double> level = flood_levels(box.data(), bw, bh, land.data());
+  for (int y = 0; y < bh; ++y)
+    for (int x = 0; x < bw; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y0 + y) * w + x0 + x, b = static_cast<std::size_t>(y) * bw + x;
+      if (raisable[i] && level[b] > z[i]) z[i] = level[b];
+    }
+}
+
+}  // namespace mcmd::morph

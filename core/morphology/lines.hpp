@@ -1,0 +1,44 @@
+// Ridge and river lines (mcmd/lines.hpp) as constraint cells of the voids
+// they cross.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "common/grid.hpp"
+#include "mcmd/lines.hpp"
+#include "mcmd/raster_access.hpp"
+
+namespace mcmd::morph {
+
+// The cells a polyline passes through, in order along it, 8-connected, each
+// once, inside the w×h raster (a line leaving and re-entering it gives one
+// list with a jump). Pre: w, h >= 1.
+std::vector<std::pair<int, int>> trace(const Line& line, int w, int h);
+
+// A void cell on a line: a ridge or river cell of the fill.
+struct LineCell {
+  int x = 0, y = 0;
+  CellState kind = CellState::river;
+  double z = 0.0;  // NaN: from the fill (the run of void cells has a known cell at one end only)
+};
+
+// The void cells of every line, with heights: the line's own where given,
+// else for each run of void cells along a line the straight fall (rivers)
+// or profile (ridges) between the known cells at its two ends; a run with a
+// known cell at one end or none gets NaN (the fill decides: see
+// channel_fill.hpp). A cell on several lines takes the first line's.
+// Reads the raster along the lines. Sorted by (y, x).
+std::vector<LineCell> line_cells(const RasterAccess& raster);
+
+// Makes the unknown cells of `grid` (whose cell (0, 0) is raster cell
+// (origin_x, origin_y)) that are line cells with a height ridge or river
+// cells of that height (a tile's window: the tiled fill).
+void place_line_cells(Grid& grid, const std::vector<LineCell>& cells);
+
+// The line cells in rectangle [x0, x0+w) × [y0, y0+h): index range into a
+// sorted list.
+std::pair<std::size_t, std::size_t> cells_in_rows(const std::vector<LineCell>& cells, int y0, int h);
+
+}  // namespace mcmd::morph

@@ -1,0 +1,266 @@
+// Morphology: the flow routines, channels through voids (-morph auto) and
+// ridge/river lines, on small synthetic terrains whose drainage is known.
+#include <algorithm>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <vector>
+
+#include "mcmd/fill_raster.hpp"
+#include "morphology/flow.hpp"
+#include "morphology/lines.hpp"
+#include "morphology/radix_heap.hpp"
+
+namespace {
+
+using namespace mcmd;
+
+// A raster in memory for fill_raster: z and valid, filled in place.
+struct MemoryRaster {
+  int w, h;
+  std::vector<double> z;
+  std::vector<std::uint8_t> valid;
+  std::vector<Line> lines;
+  RasterAccess access() {
+    RasterAccess a;
+    a.width = w;
+    a.height = h;
+    const std::vector<double> source = z;
+    const std::vector<std::uint8_t> source_valid = valid;
+    a.read = [this, source, source_valid](int x0, int y0, int rw, int rh, double* out, std::uint8_t* v) {
+      for (int y = 0; y < rh; ++y)
+        for (int x = 0; x < rw; ++x) {
+          const std::size_t i = static_cast<std::size_t>(y0 + y) * w + x0 + x;
+          out[y * rw + x] = source[i];
+          v[y * rw + x] = source_valid[i];
+        }
+    };
+    a.write = [this](int x0, int y0, int rw, int rh, const double* in, const std::uint8_t* m) {
+      for (int y = 0; y < rh; ++y)
+        for (int x = 0; x < rw; ++x)
+          if (m[y * rw + x]) z[static_cast<std::size_t>(y0 + y) * w + x0 + x] = in[y * rw + x];
+    };
+    a.lines = lines;
+    return a;
+  }
+  double at(int x, int y) const { return z[static_cast<std::size_t>(y) * w + x]; }
+  bool is_void(int x, int y) const { return !valid[static_cast<std::size_t>(y) * w + x]; }
+};
+
+// A meandering gorge falling gently to the south (+y), axis x = c(y), its
+// walls rising steeply to a plateau: a void wider than the gorge sees high
+// ground all round its rim but for the floor where the gorge enters and
+// leaves, and a smooth fill across it dams the gorge.
+double valley_axis(double y) { return 60.0 + 8.0 * std::sin(y / 15.0); }
+double valley(int x, int y) { return 1000.0 - 0.5 * y + 80.0 * std::tanh(std::abs(x - valley_axis(y)) / 5.0); }
+
+MemoryRaster with_disc_void(int w, int h, double (*f)(int, int), double cx, double cy, double r) {
+  MemoryRaster m{w, h, std::vector<double>(static_cast<std::size_t>(w) * h), std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h, 1), {}};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      m.z[i] = f(x, y);
+      if (std::hypot(x - cx, y - cy) <= r) m.valid[i] = 0, m.z[i] = -9999.0;
+    }
+  return m;
+}
+
+// Cells plain Priority-Flood would raise (closed depressions), with the
+// raster border as the outlet. (The sampled gorge has a few pits of its own.)
+std::vector<std::uint8_t> ponded(const MemoryRaster& m) {
+  const std::vector<morph::FlowCell> land(m.z.size(), morph::FlowCell::land);
+  const std::vector<double> level = morph::flood_levels(m.z.data(), m.w, m.h, land.data());
+  std::vector<std::uint8_t> out(m.z.size());
+  // ε levels sit a few ulps above a cell on its way out: a pond is a rise of
+  // more than a millimetre.
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = level[i] > m.z[i] + 1e-3;
+  return out;
+}
+
+// The steepest-descent path on the raw values from (x, y) until the border
+// or a cell with no lower neighbour (an independent D8, no flooding).
+std::vector<std::pair<int, int>> d8_path(const MemoryRaster& m, int x, int y) {
+  std::vector<std::pair<int, int>> path{{x, y}};
+  for (int steps = 0; steps < m.w * m.h; ++steps) {
+    int bx = -1, by = -1;
+    double best = 0.0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx, ny = y + dy;
+        if ((!dx && !dy) || nx < 0 || ny < 0 || nx >= m.w || ny >= m.h) continue;
+        const double slope = (m.at(x, y) - m.at(nx, ny)) / std::hypot(dx, dy);
+        if (slope > best) best = slope, bx = nx, by = ny;
+      }
+    if (bx < 0) break;
+    x = bx, y = by;
+    path.emplace_back(x, y);
+  }
+  return path;
+}
+
+TEST(RadixHeap, PopsInOrderAndEqualLevelsInTheOrderPushed) {
+  morph::RadixHeap heap;
+  heap.push(5.0, 1);
+  heap.push(-3.0, 2);
+  heap.push(5.0, 3);
+  heap.push(1e10, 4);
+  EXPECT_EQ(heap.pop().second, 2);
+  heap.push(0.5, 5);
+  EXPECT_EQ(heap.pop().second, 5);
+  EXPECT_EQ(heap.pop().second, 1);
+  EXPECT_EQ(heap.pop().second, 3);
+  const auto last = heap.pop();
+  EXPECT_EQ(last.first, 1e10);
+  EXPECT_TRUE(heap.empty());
+}
+
+double v_valley(int x, int y) { return 1000.0 - 2.0 * y + 3.0 * std::abs(x - valley_axis(y)); }
+
+TEST(Flow, AccumulationGathersAlongTheValleyFloor) {
+  MemoryRaster m = with_disc_void(121, 161, v_valley, -100, -100, 1);  // no void
+  const std::vector<morph::FlowCell> land(m.z.size(), morph::FlowCell::land);
+  const morph::Flow f = morph::route(m.z.data(), m.w, m.h, land.data());
+  const std::vector<double> a = morph::accumulation(f, land.data());
+  // Near the outlet at the southern border, the floor carries most of the raster.
+  const int y = m.h - 3, x = static_cast<int>(std::lround(valley_axis(y)));
+  double best = 0;
+  for (int dx = -1; dx <= 1; ++dx) best = std::max(best, a[static_cast<std::size_t>(y) * m.w + x + dx]);
+  EXPECT_GT(best, 0.5 * m.w * m.h);
+}
+
+TEST(Flow, DrainRaisesOnlyTheRaisableCellsOfAPit) {
+  std::vector<double> z(25, 10.0);
+  z[12] = 0.0;  // a pit in the middle of a 5×5 plateau
+  z[7] = 1.0;   // and beside it a lower cell that may not be raised
+  std::vector<std::uint8_t> raisable(25, 0);
+  raisable[12] = 1;
+  morph::drain(z.data(), 5, 5, raisable.data());
+  EXPECT_GE(z[12], 1.0);  // raised to the level of the water held by cell 7
+  EXPECT_EQ(z[7], 1.0);
+  EXPECT_EQ(z[0], 10.0);
+}
+
+TEST(MorphAuto, ValleyThroughAVoidStaysContinuousAndDescending) {
+  MemoryRaster m = with_disc_void(121, 161, valley, valley_axis(80), 80, 18);
+  FillParams p;
+  p.morph.channels = true;
+  fill_raster(m.access(), p, TilingParams{});
+  const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(121, 161, valley, -100, -100, 1));
+  int new_ponds = 0;
+  for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
+  EXPECT_EQ(new_ponds, 0);  // no pond in the void nor upstream of it
+  // The floor (the lowest cell of each row crossing the void) falls downstream.
+  double previous = 1e300;
+  for (int y = 62; y <= 98; ++y) {
+    double floor = 1e300;
+    for (int x = 0; x < m.w; ++x) floor = std::min(floor, m.at(x, y));
+    EXPECT_LE(floor, previous) << "row " << y;
+    previous = floor;
+  }
+}
+
+TEST(MorphAuto, TheDefaultFillDamsTheSameValley) {  // what the test above guards against
+  MemoryRaster m = with_disc_void(121, 161, valley, valley_axis(80), 80, 18);
+  fill_raster(m.access(), FillParams{}, TilingParams{});
+  const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(121, 161, valley, -100, -100, 1));
+  int new_ponds = 0;
+  for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
+  EXPECT_GT(new_ponds, 100);
+}
+
+// A plane falling south, and a river drawn across it that the terrain's own
+// slope would not follow.
+double plane(int x, int y) { return 500.0 - 1.0 * y - 0.3 * x; }
+
+TEST(Lines, ARiverLineIsFollowedThroughTheVoid) {
+  MemoryRaster m = with_disc_void(101, 101, plane, 50, 50, 20);
+  Line river;
+  river.kind = CellState::river;
+  for (int y = 0; y <= 100; y += 4) river.points.push_back({50.5 + 12.0 * std::sin(y / 12.0), y + 0.5});
+  m.lines = {river};
+  FillParams p;
+  p.z_step = 1.0;
+  fill_raster(m.access(), p, TilingParams{});
+  const std::vector<std::pair<int, int>> line = morph::trace(river, m.w, m.h);
+  // From the line's first cell inside the void, water runs along the line
+  // (within a cell) until it leaves the void.
+  auto start = std::find_if(line.begin(), line.end(), [&](auto c) { return std::hypot(c.first - 50, c.second - 50) <= 20; });
+  ASSERT_NE(start, line.end());
+  int inside = 0, near = 0;
+  for (const auto& [x, y] : d8_path(m, start->first, start->second)) {
+    if (std::hypot(x - 50, y - 50) > 20) break;
+    ++inside;
+    near += std::any_of(line.begin(), line.end(),
+                        [&](auto c) { return std::abs(c.first - x) <= 1 && std::abs(c.second - y) <= 1; });
+  }
+  EXPECT_GT(inside, 20);
+  EXPECT_EQ(near, inside);
+  // Without the line, water takes the plane's own slope, away from it.
+  MemoryRaster plain = with_disc_void(101, 101, plane, 50, 50, 20);
+  fill_raster(plain.access(), p, TilingParams{});
+  int plain_near = 0;
+  for (const auto& [x, y] : d8_path(plain, start->first, start->second)) {
+    if (std::hypot(x - 50, y - 50) > 20) break;
+    plain_near += std::any_of(line.begin(), line.end(),
+                              [&](auto c) { return std::abs(c.first - x) <= 1 && std::abs(c.second - y) <= 1; });
+  }
+  EXPECT_LT(plain_near, near / 2);
+}
+
+double ridge(int x, int y) { return 800.0 + 0.5 * y - 4.0 * std::abs(x - 50.0); }
+
+// The crest line bends inside the void (x = 50 outside it, up to 58 in the
+// middle): the user knows where the hidden crest runs.
+double crest_x(double y) { return 50.0 + 8.0 * std::max(0.0, 1.0 - std::abs(y - 50.0) / 20.0); }
+
+// Rows of the void where the line's cells (xa .. xb on the row) hold the
+// maximum of the row's cross-profile: above their neighbours and above the
+// cells 4 away.
+int crest_maxima(const MemoryRaster& m, const std::vector<std::pair<int, int>>& line, int& profiles) {
+  int maxima = 0;
+  profiles = 0;
+  for (int y = 34; y <= 66; ++y) {
+    int xa = m.w, xb = -1;
+    for (const auto& [x, ly] : line)
+      if (ly == y && m.is_void(x, y)) xa = std::min(xa, x), xb = std::max(xb, x);
+    if (xb < 0) continue;
+    ++profiles;
+    double crest = -1e300;
+    for (int x = xa; x <= xb; ++x) crest = std::max(crest, m.at(x, y));
+    maxima += crest >= m.at(xa - 1, y) && crest >= m.at(xb + 1, y) && crest > m.at(xa - 4, y) && crest > m.at(xb + 4, y);
+  }
+  return maxima;
+}
+
+TEST(Lines, ARidgeLineIsTheCrestAcrossTheVoid) {
+  MemoryRaster m = with_disc_void(101, 101, ridge, 50, 50, 20);
+  Line crest;
+  crest.kind = CellState::ridge;
+  for (int y = 0; y <= 100; y += 2) crest.points.push_back({crest_x(y) + 0.5, y + 0.5});
+  MemoryRaster plain = m;
+  fill_raster(plain.access(), FillParams{}, TilingParams{});
+  m.lines = {crest};
+  fill_raster(m.access(), FillParams{}, TilingParams{});
+  int profiles = 0;
+  const std::vector<std::pair<int, int>> cells = morph::trace(crest, m.w, m.h);
+  const int maxima = crest_maxima(m, cells, profiles), plain_maxima = crest_maxima(plain, cells, profiles);
+  EXPECT_GT(profiles, 25);
+  EXPECT_GE(maxima, 0.9 * profiles);
+  EXPECT_LT(plain_maxima, 0.5 * profiles);  // without the line the fill's crest is elsewhere
+}
+
+TEST(Lines, TracedCellsAreEightConnectedAndInsideTheRaster) {
+  Line l;
+  l.points = {{-5.0, 3.2}, {20.7, 9.9}, {20.2, 30.4}};
+  const auto cells = morph::trace(l, 16, 25);
+  ASSERT_FALSE(cells.empty());
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    EXPECT_GE(cells[k].first, 0);
+    EXPECT_LT(cells[k].first, 16);
+    EXPECT_LT(cells[k].second, 25);
+    if (k > 0 && cells[k].first < 15 && cells[k - 1].first < 15) {  // a jump only where it leaves the raster
+      EXPECT_LE(std::max(std::abs(cells[k].first - cells[k - 1].first), std::abs(cells[k].second - cells[k - 1].second)), 1);
+    }
+  }
+}
+
+}  // namespace
