@@ -5,6 +5,7 @@
 #include <string>
 
 #include "lib/errors.hpp"
+#include "lib/line_input.hpp"
 #include "lib/options.hpp"
 #include "lib/pixel_type.hpp"
 #include "lib/terrain_sketch.hpp"
@@ -12,6 +13,7 @@
 #include "mcmd/peaks.hpp"
 #include "mcmd/skeleton.hpp"
 #include "mcmd/terrain_filters.hpp"
+#include "mcmd/terrain_lines.hpp"
 
 namespace mcmd::gdal {
 
@@ -83,6 +85,22 @@ void add_points(Canvas& c, const TerrainOptions& o) {
   }
 }
 
+// RIDGES and RIVERS, in the target's georeferencing: none may miss the raster whole.
+void add_lines(Canvas& c, GDALRasterBand& target, const TerrainOptions& o) {
+  std::vector<Line> lines;
+  for (const auto& [path, kind] : {std::pair{o.ridges, CellState::ridge}, std::pair{o.rivers, CellState::river}}) {
+    if (path.empty()) continue;
+    GDALDataset* ds = target.GetDataset();
+    if (!ds) refuse("RIDGES and RIVERS need the target band's dataset (its georeferencing)");
+    const std::vector<Line> read = read_lines(path, kind, *ds);
+    if (lines_inside(read, c.w, c.h) == 0)
+      refuse(std::string("no ") + (kind == CellState::ridge ? "ridge" : "river") + " line of '" + path +
+             "' crosses the " + size_text(c.w, c.h) + " raster (check its CRS and extent)");
+    lines.insert(lines.end(), read.begin(), read.end());
+  }
+  if (!lines.empty()) draw_lines(c, lines, o.ridge_z, o.river_z);
+}
+
 // METHOD=none: what an unknown cell is written as.
 double unknown_value(const PixelType& t) {
   if (t.has_nodata) return t.nodata;
@@ -114,7 +132,8 @@ void write_canvas(GDALRasterBand& target, const Canvas& c, bool unknown_as_nodat
 
 }  // namespace
 
-Canvas terrain_constraints(int w, int h, GDALRasterBand* sketch, const TerrainOptions& o) {
+Canvas terrain_constraints(GDALRasterBand& target, GDALRasterBand* sketch, const TerrainOptions& o) {
+  const int w = target.GetXSize(), h = target.GetYSize();
   check_terrain_size(w, h);
   check_combination(sketch, o);
   Canvas c = sketch ? from_sketch(w, h, *sketch, o)
@@ -123,12 +142,13 @@ Canvas terrain_constraints(int w, int h, GDALRasterBand* sketch, const TerrainOp
                           : Canvas(w, h);
   add_points(c, o);
   if (!o.states_file.empty()) apply_states(c, o.states_file);
+  add_lines(c, target, o);
   return c;
 }
 
 void make_terrain(GDALRasterBand& target, GDALRasterBand* sketch, const TerrainOptions& o, const ProgressFn& progress) {
   report(progress, 0.0);
-  Canvas c = terrain_constraints(target.GetXSize(), target.GetYSize(), sketch, o);
+  Canvas c = terrain_constraints(target, sketch, o);
   report(progress, 0.1);
   TerrainParams params = o.terrain;
   params.threads = effective_threads(params.threads);

@@ -10,10 +10,12 @@
 
 namespace mcmd::gdal {
 
-// The constraints of a w×h terrain. `sketch` may be null; with UPSAMPLE=K
-// the sketch (or the peaks) is the coarse raster, ((w−1)/K+1)×((h−1)/K+1).
-// Throws Failure / OptionError / std::invalid_argument with one line.
-Canvas terrain_constraints(int w, int h, GDALRasterBand* sketch, const TerrainOptions& options);
+// The constraints of the terrain of `target` (its size; its dataset's
+// georeferencing places RIDGES and RIVERS). `sketch` may be null; with
+// UPSAMPLE=K the sketch (or the peaks) is the coarse raster,
+// ((w−1)/K+1)×((h−1)/K+1). Throws Failure / OptionError /
+// std::invalid_argument with one line.
+Canvas terrain_constraints(GDALRasterBand& target, GDALRasterBand* sketch, const TerrainOptions& options);
 
 // Fill `target` (every cell; with METHOD=none the unknown cells get the
 // band's nodata value, or NaN for a float band without one).

@@ -56,6 +56,17 @@ std::vector<double> numbers(const std::string& name, const std::string& value, s
   return out;
 }
 
+std::string file_name(const std::string& name, const std::string& value) {
+  if (value.empty()) fail(name, value, "a file name");
+  return value;
+}
+
+// "Z" or "Z1,Z2".
+std::vector<double> heights(const std::string& name, const std::string& value) {
+  const CPLStringList parts(CSLTokenizeString2(value.c_str(), ", ", 0));
+  return numbers(name, value, parts.size() == 2 ? 2 : 1, "Z or Z1,Z2 (the first and last point's)");
+}
+
 void set_method(TerrainOptions& o, const std::string& n, const std::string& v) {
   const std::string m = upper(v);
   TerrainParams& t = o.terrain;
@@ -142,7 +153,11 @@ const std::map<std::string, Setter>& setters() {
          o.has_peaks_threshold = true;
        }},
       {"POINTS", set_points},
-      {"STATES", [](TerrainOptions& o, auto&, auto& v) { o.states_file = v; }},
+      {"STATES", [](TerrainOptions& o, auto& n, auto& v) { o.states_file = file_name(n, v); }},
+      {"RIDGES", [](TerrainOptions& o, auto& n, auto& v) { o.ridges = file_name(n, v); }},
+      {"RIVERS", [](TerrainOptions& o, auto& n, auto& v) { o.rivers = file_name(n, v); }},
+      {"RIDGE_Z", [](TerrainOptions& o, auto& n, auto& v) { o.ridge_z = heights(n, v); }},
+      {"RIVER_Z", [](TerrainOptions& o, auto& n, auto& v) { o.river_z = heights(n, v); }},
       {"UPSAMPLE", [](TerrainOptions& o, auto& n, auto& v) { o.upsample = integer_in(n, v, 1, 1024); }},
       {"MEDIAN",
        [](TerrainOptions& o, auto& n, auto& v) {
@@ -170,7 +185,7 @@ constexpr double kDefaultH = 0.7;  // rolling relief (fillnodata's 0.5 looks lik
 const char* terrain_option_names() {
   return "METHOD, SCHEME, SHARPNESS, RS, H, RT, SEED, I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, DELTA, "
          "UNKNOWN, ZRANGE, SKELETON, RIDGE_COUPLES, RIVER_PARTICLES, PEAKS, PEAKS_NOISE, PEAKS_THRESHOLD, POINTS, "
-         "STATES, UPSAMPLE, MEDIAN, MEDIAN_PASSES, MEDIAN_ALL, NUM_THREADS";
+         "STATES, RIDGES, RIVERS, RIDGE_Z, RIVER_Z, UPSAMPLE, MEDIAN, MEDIAN_PASSES, MEDIAN_ALL, NUM_THREADS";
 }
 
 TerrainOptions parse_terrain_options(CSLConstList options) {

@@ -40,6 +40,8 @@ struct TerrainOptions {
   double peaks_threshold = 0.0;
   std::vector<TerrainPoint> points;
   std::string states_file;
+  std::string ridges, rivers;             // line files (OGR vectors or raster masks)
+  std::vector<double> ridge_z, river_z;   // heights for line cells without one: Z, or Z1,Z2 along the line
   int upsample = 1;
   int median = 0, median_passes = 1;
   bool median_all = false;

@@ -23,7 +23,8 @@ const std::map<std::string, std::string>& option_flags() {
       {"-river-Ibu", "RIVER_I_BU"}, {"-delta", "DELTA"},      {"-threads", "NUM_THREADS"},
       {"-unknown", "UNKNOWN"},   {"-ridge-couples", "RIDGE_COUPLES"}, {"-river-particles", "RIVER_PARTICLES"},
       {"-peaks", "PEAKS"},       {"-peaks-noise", "PEAKS_NOISE"}, {"-peaks-threshold", "PEAKS_THRESHOLD"},
-      {"-states", "STATES"},     {"-upsample", "UPSAMPLE"},   {"-median", "MEDIAN"},
+      {"-states", "STATES"},     {"-ridges", "RIDGES"},       {"-rivers", "RIVERS"},
+      {"-ridge-z", "RIDGE_Z"},   {"-river-z", "RIVER_Z"},     {"-upsample", "UPSAMPLE"},   {"-median", "MEDIAN"},
       {"-median-passes", "MEDIAN_PASSES"},
   };
   return table;

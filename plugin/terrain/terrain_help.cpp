@@ -57,6 +57,16 @@ The sketch (a raster GDAL reads: grey PNG, GeoTIFF, a DEM with voids):
                    image where red pixels are ridges and blue ones rivers
                    (paint them on a layer of the sketch). Ridges become
                    crests, rivers valleys. -states lines.png.
+  -ridges file, -rivers file   Ridge and river lines: vector lines in any
+                   format OGR reads (reprojected to the output's CRS; lines
+                   without a CRS are refused when the output has one), or a
+                   raster mask of the output's size (nonzero = on the line).
+                   Their cells become ridge and river cells: -ridges crests.gpkg.
+  -ridge-z Z[,Z2], -river-z Z1[,Z2]   Heights of line cells that have none
+                   (no Z in the lines, no sketch cell under them, no known
+                   cells at both ends of their run): one value, or the first
+                   and last point's along the line (a river from its source
+                   down): -river-z 480,80.
   -point col row z Add a constraint cell (repeatable), e.g. corners and centre
                    as the paper's Fig. 2: -point 0 0 500 -point 512 512 1000.
   -upsample K      Supersample: the sketch's cells (or the peaks') become
