@@ -18,7 +18,7 @@ constexpr double kMaxMove = 0.5;     // cells per sub-step: consecutive path cel
 constexpr double kRestSpeed = 0.01;  // cells per step
 constexpr int kRestSteps = 40;       // that slow for this long: at rest
 constexpr double kTopPart = 0.3;     // sources lie in the first 30 % of a route (its high part)
-constexpr int kJoinReach = 3;
+constexpr int kJoinReach = 6;
 constexpr double kTroughDepth = 0.05;  // of the relief's scale: the valley a kept river digs        // a river this close (Chebyshev) is joined: no parallel rivers
 constexpr std::uint64_t kSourceStream = 21;
 
