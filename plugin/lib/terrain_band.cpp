@@ -71,8 +71,7 @@ Canvas from_skeleton(int w, int h, const TerrainOptions& o) {
   p.river_particles = o.river_particles;
   p.z_low = o.z_min;
   p.z_high = o.z_max;
-  p.H = o.terrain.fill.H;
-  p.seed = o.terrain.fill.seed;
+  p.seed = o.terrain.fill.seed;  // its H stays its own: -H shapes the relief, not the skeleton
   return make_skeleton(w, h, p).canvas;
 }
 

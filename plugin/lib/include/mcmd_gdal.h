@@ -61,7 +61,9 @@ MCMD_API CPLErr MCMDFillNodata(GDALRasterBandH hTargetBand, GDALRasterBandH hMas
  *               UNKNOWN=white|black|none|<value>, ZRANGE=MIN,MAX,
  *               SKELETON=YES, RIDGE_COUPLES, RIVER_PARTICLES,
  *               PEAKS=iizuka|<count>, PEAKS_NOISE, PEAKS_THRESHOLD,
- *               POINTS=col,row,z[;...], STATES=<raster>, UPSAMPLE=K,
+ *               POINTS=col,row,z[;...], STATES=<raster>, RIDGES=<lines>,
+ *               RIVERS=<lines> (any OGR format, or a raster mask),
+ *               RIDGE_Z=Z[,Z2], RIVER_Z=Z1[,Z2], UPSAMPLE=K,
  *               MEDIAN=N, MEDIAN_PASSES, MEDIAN_ALL=YES, NUM_THREADS.
  *               Unknown names are errors.
  *  pfnProgress  GDAL progress callback (may be NULL); FALSE stops it with
