@@ -1,5 +1,6 @@
 #include "terrain/paper_terrain.hpp"
 
+#include <bit>
 #include <vector>
 
 #include "common/grid.hpp"
@@ -11,11 +12,8 @@ namespace mcmd::terrain {
 
 namespace {
 
-int levels_covering(int side) {
-  int n = 0;
-  while ((1 << n) + 1 < side) ++n;
-  return n;
-}
+// n of the smallest 2^n + 1 >= side.
+int levels_covering(int side) { return side <= 2 ? 0 : std::bit_width(static_cast<unsigned>(side - 2)); }
 
 Grid grid_of(const Canvas& c, std::vector<std::uint8_t>& fixed) {
   Grid g(levels_covering(c.w > c.h ? c.w : c.h));

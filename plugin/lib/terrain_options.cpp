@@ -14,13 +14,11 @@ namespace mcmd::gdal {
 
 namespace {
 
-std::string upper(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
+std::string upper(const std::string& s) { return CPLString(s).toupper(); }
 
+// The one form of a bad value's message (as options.cpp words it).
 [[noreturn]] void fail(const std::string& name, const std::string& value, const std::string& want) {
-  throw OptionError(name + "=" + value + " is invalid: expected " + want);
+  throw OptionError(CPLString().Printf("%s=%s is invalid: expected %s", name.c_str(), value.c_str(), want.c_str()));
 }
 
 double number(const std::string& name, const std::string& value, const std::string& want = "a number") {

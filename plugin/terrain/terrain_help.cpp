@@ -1,15 +1,13 @@
 #include "terrain/terrain_help.hpp"
 
-#include "gdal.h"
-
-#ifndef MCMD_VERSION
-#define MCMD_VERSION "unknown"
-#endif
+#include "cli/help.hpp"
 
 namespace mcmd::cli {
 
+// mcmd_fillnodata's line ("mcmd_fillnodata X.Y.Z (GDAL ...)") with this tool's name.
 std::string terrain_version_text() {
-  return std::string("mcmd_terrain ") + MCMD_VERSION + " (GDAL " + GDALVersionInfo("RELEASE_NAME") + ")\n";
+  const std::string fill = version_text();
+  return "mcmd_terrain" + fill.substr(fill.find(' '));
 }
 
 std::string terrain_help_text() {

@@ -24,19 +24,15 @@ namespace {
 
 volatile std::sig_atomic_t g_interrupted = 0;
 
-// A part [lo, hi] of the user's progress bar that also honours SIGINT.
-struct Slice {
-  GDALProgressFunc fn;
-  double lo, hi;
-  static int CPL_STDCALL call(double f, const char* msg, void* self) {
-    const auto* s = static_cast<const Slice*>(self);
-    if (g_interrupted) return FALSE;
-    return s->fn ? s->fn(s->lo + (s->hi - s->lo) * f, msg, nullptr) : TRUE;
-  }
-  ProgressFn as_fn() const {
-    return [this](double f) { return call(f, "", const_cast<Slice*>(this)) != FALSE; };
-  }
-};
+// The user's progress bar over [lo, hi], which SIGINT stops.
+ProgressFn progress_part(GDALProgressFunc fn, double lo, double hi) {
+  return [=](double f) { return !g_interrupted && (!fn || fn(lo + (hi - lo) * f, "", nullptr) != FALSE); };
+}
+
+// A ProgressFn behind GDAL's callback (arg: the ProgressFn).
+int CPL_STDCALL through(double f, const char*, void* arg) {
+  return (*static_cast<const ProgressFn*>(arg))(f) ? TRUE : FALSE;
+}
 
 std::string size_text(long long w, long long h) { return std::to_string(w) + "x" + std::to_string(h); }
 
@@ -133,8 +129,8 @@ DatasetPtr memory_raster(const TerrainArgs& a, const Layout& l) {
 }
 
 void write_copy(GDALDriver* driver, const std::string& path, GDALDataset& from, const CPLStringList& co,
-                ErrorLog& log, const Slice& slice, const std::string& shown) {
-  DatasetPtr out = create_copy(driver, path, from, co.List(), log, &Slice::call, const_cast<Slice*>(&slice), shown);
+                ErrorLog& log, const ProgressFn& progress, const std::string& shown) {
+  DatasetPtr out = create_copy(driver, path, from, co.List(), log, through, const_cast<ProgressFn*>(&progress), shown);
   out.reset();  // closes: flushes
   if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + shown + "': " + log.first_failure());
 }
@@ -154,13 +150,13 @@ void run_terrain(const TerrainArgs& a, ErrorLog& log, GDALProgressFunc progress)
   if (!a.hillshade.empty()) shade = std::make_unique<TempOutput>(a.hillshade, png_driver());
 
   DatasetPtr terrain = memory_raster(a, l);
-  const Slice make{progress, 0.0, 0.85};
-  gdal::make_terrain(*terrain->GetRasterBand(1), l.sketch, a.terrain, make.as_fn());
+  gdal::make_terrain(*terrain->GetRasterBand(1), l.sketch, a.terrain, progress_part(progress, 0.0, 0.85));
   log.reset();
-  write_copy(driver, out.path(), *terrain, co, log, Slice{progress, 0.85, shade ? 0.95 : 1.0}, a.dst);
+  write_copy(driver, out.path(), *terrain, co, log, progress_part(progress, 0.85, shade ? 0.95 : 1.0), a.dst);
   if (shade) {
     DatasetPtr png = hillshade_of(*terrain->GetRasterBand(1), l.georef);
-    write_copy(png_driver(), shade->path(), *png, CPLStringList(), log, Slice{progress, 0.95, 1.0}, a.hillshade);
+    write_copy(png_driver(), shade->path(), *png, CPLStringList(), log, progress_part(progress, 0.95, 1.0),
+               a.hillshade);
   }
   out.commit();
   if (shade) shade->commit();
