@@ -37,11 +37,11 @@ Size and georeferencing:
                    cells without a value; default NaN, or the type's minimum).
   -hillshade file  Also write a shaded preview (PNG, light from the NW):
                    -hillshade terrain.png.
-  -q               Quiet: print no progress.
+  -q               Quiet: print no progress (mcmd_terrain -q ...).
   --help           This text.    --version   Version of mcmd and GDAL.
 
 The sketch (a raster GDAL reads: grey PNG, GeoTIFF, a DEM with voids):
-  -b band          Band of the sketch holding the grey levels (default 1).
+  -b band          Band of the sketch holding the grey levels (default 1): -b 2.
   -unknown white|black|none|value   Cells to synthesise, besides nodata,
                    mask, alpha = 0 and NaN cells. Default: white (255 in a
                    Byte sketch, 65535 in a UInt16 one) when the sketch has no
@@ -59,7 +59,8 @@ The sketch (a raster GDAL reads: grey PNG, GeoTIFF, a DEM with voids):
                    format OGR reads (reprojected to the output's CRS; lines
                    without a CRS are refused when the output has one), or a
                    raster mask of the output's size (nonzero = on the line).
-                   Their cells become ridge and river cells: -ridges crests.gpkg.
+                   Their cells become ridge and river cells:
+                   -ridges crests.gpkg.
   -ridge-z Z[,Z2], -river-z Z1[,Z2]   Heights of line cells that have none
                    (no Z in the lines, no sketch cell under them, no known
                    cells at both ends of their run): one value, or the first
@@ -78,12 +79,15 @@ Generators (instead of a sketch):
                    them, join and drain to the border. Their cells become ridge
                    and river constraints of the terrain.
   -ridge-couples N, -river-particles N   How many (default: about one couple
-                   per 80 cells of side, 6 river particles per couple).
+                   per 80 cells of side, 6 river particles per couple):
+                   -ridge-couples 4 -river-particles 40.
   -peaks iizuka|N  Iizuka's multi-peak surface (eq. 8): Table 1's six peaks,
                    or N random ones. Every cell is known; add -upsample K to
                    synthesise detail between them: -peaks iizuka -size 65 65.
-  -peaks-noise E   E x GAUSS per cell (Iizuka's Fig. 5: -5). Default 0.
-  -peaks-threshold Z   Values below Z become 0 (Iizuka's Z_sh, 10).
+  -peaks-noise E   E x GAUSS per cell (default 0; Iizuka's Fig. 5:
+                   -peaks-noise -5).
+  -peaks-threshold Z   Values below Z become 0 (Iizuka's Z_sh):
+                   -peaks-threshold 10.
 
 Synthesis:
   -method m        mcmd (default): the thin plate through the constraints
@@ -92,7 +96,7 @@ Synthesis:
                    MDBU then midpoint displacement, on -scheme. mdi: the older
                    bottom-up pass of Belhadj & Audibert 2005, then plain
                    midpoint displacement. none: the constraints alone (unknown
-                   cells nodata), e.g. to look at a skeleton.
+                   cells nodata), e.g. to look at a skeleton. -method paper-te.
   -scheme s        ds (diamond-square, default), te (triangle-edge) or
                    butterfly (the butterfly stencil of Dyn, Levin & Gregory
                    top-down): for -method paper and mdi. -scheme butterfly.
@@ -103,32 +107,34 @@ Synthesis:
                    smooth. For mcmd the amplitude of the coarsest octave, for
                    the paper methods the paper's rs (eq. 1).
   -H value         Hurst exponent in [0, 1] (default 0.7): high = smooth,
-                   rolling relief, low = rugged. The paper's figures use 0.45.
+                   rolling relief, low = rugged. The paper's figures: -H 0.45.
   -rt value        Bias in [-1, 1] (default 0): > 0 raises, < 0 lowers the
-                   terrain between the constraints.
-  -seed n          Seed of the relief and the generators (default 0). Same
-                   seed, same bits, whatever the thread count.
+                   terrain between the constraints: -rt -0.2.
+  -seed n          Seed of the relief and the generators (default 0): -seed 7.
+                   Same seed, same bits, whatever the thread count.
   -sharpness f     mcmd: how sharp ridge crests and river valleys are, in
                    [0, 10] (default 1; 0 = smooth across them). -sharpness 2.
   -I v, -Ibu v     Paper methods: shape of the top-down and bottom-up
                    interpolation of known cells (the paper's I, I_bu; -100..
                    100). -I 1.1 -Ibu 4.
   -ridge-I v, -ridge-Ibu v, -river-I v, -river-Ibu v   The same for ridge
-                   and river cells (default: as known cells).
-  -delta form      Paper methods: normalized (default) or paper (Δ as printed).
-  -threads n       Worker threads or ALL_CPUS (default).
+                   and river cells (default: as known cells): -ridge-I -1.
+  -delta form      Paper methods: normalized (default) or paper (Δ as printed):
+                   -delta paper.
+  -threads n       Worker threads or ALL_CPUS (default): -threads 1.
   -o NAME=VALUE    Any MCMDTerrain option, e.g. -o RIDGE_COUPLES=4.
 
 After the synthesis:
   -median N        N x N median filter of the synthesised cells (odd N), as
                    the paper's material example (Fig. 13): -median 5.
-  -median-passes P Passes of it (default 1; Fig. 13: 2).
-  -median-all      Filter the constraint cells too (they then change).
+  -median-passes P Passes of it (default 1; Fig. 13: -median-passes 2).
+  -median-all      Filter the constraint cells too (they then change), as
+                   Fig. 13: -median 5 -median-passes 2 -median-all.
 
 Examples:
   mcmd_terrain -size 1025 1025 -rs 300m -seed 4 -hillshade t.png t.tif
   mcmd_terrain -zrange 0 2000 -rs 0.2 -states lines.png sketch.png t.tif
-  mcmd_terrain -skeleton -size 513 513 -rs 0.5 -method paper-te -I 1 -Ibu 6 t.tif
+  mcmd_terrain -skeleton -size 513 513 -rs 0.5 -method paper-te -Ibu 6 t.tif
   mcmd_terrain -upsample 4 coarse_dem.tif fine_dem.tif
 
 Method: F. Belhadj, "Terrain modeling: a constrained fractal model", AFRIGRAPH

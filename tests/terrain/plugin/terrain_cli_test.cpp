@@ -221,3 +221,40 @@ TEST(TerrainCli, FillnodataTakesRsInElevationUnits) {
 
 }  // namespace
 }  // namespace mcmd::test
+
+namespace mcmd::test {
+namespace {
+
+// -unknown black and a one-band states raster (1 = ridge): the black cells
+// are made, the marked cells become creased ridges (the terrain changes),
+// and every known cell stays.
+TEST(TerrainCli, UnknownBlackAndOneBandStates) {
+  TempDir dir;
+  Image img{80, 60, 1, GDT_Byte, std::vector<double>(80 * 60, 0.0)};
+  Image states{80, 60, 1, GDT_Byte, std::vector<double>(80 * 60, 0.0)};
+  for (int x = 10; x < 70; ++x) {
+    img.values[30 * 80 + x] = 200;
+    states.values[30 * 80 + x] = 1;
+  }
+  img.values[5 * 80 + 5] = 20;
+  img.values[55 * 80 + 75] = 20;
+  write_image(dir.file("s.tif"), img, "GTiff");
+  write_image(dir.file("states.tif"), states, "GTiff");
+  expect_ok(run_terrain({"-q", "-unknown", "black", dir.file("s.tif"), dir.file("plain.tif")}));
+  expect_ok(run_terrain({"-q", "-unknown", "black", "-states", dir.file("states.tif"), dir.file("s.tif"),
+                         dir.file("ridge.tif")}));
+  const Image plain = read_image(dir.file("plain.tif")), ridge = read_image(dir.file("ridge.tif"));
+  for (int x = 10; x < 70; ++x) {
+    EXPECT_EQ(plain.at(x, 30), 200);
+    EXPECT_EQ(ridge.at(x, 30), 200);
+  }
+  EXPECT_EQ(ridge.at(5, 5), 20);
+  EXPECT_NE(plain.values, ridge.values);
+  // The crest: two cells off the ridge the creased terrain is lower than the plain one.
+  EXPECT_LT(ridge.at(40, 28), plain.at(40, 28));
+  EXPECT_LT(ridge.at(40, 32), plain.at(40, 32));
+  EXPECT_GT(plain.at(40, 40), 20);  // black (0) cells were made, not kept
+}
+
+}  // namespace
+}  // namespace mcmd::test
