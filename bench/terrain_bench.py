@@ -285,7 +285,8 @@ def times_table(md: list, times: dict, repeats: int):
     md += ["## Whole-process times against the paper's", "",
            f"Wall time of one `mcmd_terrain` process (read the sketch, make the terrain, write a Float32 "
            f"GeoTIFF; no hillshade), the best of {repeats} runs, against the times the paper gives for its "
-           "whole process on a Pentium IV 4 GHz (2007).", "",
+           "whole process on a Pentium IV 4 GHz (2007). The paper methods run on one core; the default "
+           "method's solve uses both, and is the one slowed most when other jobs share the machine.", "",
            "| model | paper | ours, paper te | ours, paper ds | ours, default method |", "|---|---|---|---|---|",
            f"| a million points from a sketch (Fig. 12) | 0.25 s | {f(s['te'])} s | {f(s['ds'])} s | {f(s['mcmd'])} s |",
            f"| a quarter million from a skeleton, skeleton included (Fig. 11a) | 0.61 s (0.5 + 0.11) | "
