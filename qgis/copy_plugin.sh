@@ -18,4 +18,9 @@ if [ -n "$cli" ]; then
   mkdir -p "$dest/bin"
   cp "$cli" "$dest/bin/mcmd_fillnodata"
   chmod 755 "$dest/bin/mcmd_fillnodata"
+  # mcmd:terrain runs mcmd_terrain, found beside mcmd_fillnodata.
+  if [ -x "$(dirname "$cli")/mcmd_terrain" ]; then
+    cp "$(dirname "$cli")/mcmd_terrain" "$dest/bin/mcmd_terrain"
+    chmod 755 "$dest/bin/mcmd_terrain"
+  fi
 fi

@@ -36,6 +36,7 @@ LAYERS = {
     "plugin/lib/include": 8,
     "plugin/lib": 9,
     "plugin/cli": 10,
+    "plugin/terrain": 10,
     "python/src": 11,
 }
 PUBLIC = {"core/include/mcmd", "plugin/lib/include"}

@@ -23,4 +23,9 @@ struct Contribution {
 // Combine contributions with Δ in `form`. Pre: contributions not empty.
 double combine(DeltaForm form, std::span<const Contribution> contributions, double dmax);
 
+// combine() with the weights given, w[k] = delta_weight(I_k, d_k, dmax) (a
+// caller that meets few distances computes them once): the same arithmetic,
+// the same bits. Pre: n >= 1.
+double combine_weighted(DeltaForm form, const double* e, const double* w, int n);
+
 }  // namespace mcmd

@@ -13,7 +13,8 @@
 namespace mcmd {
 
 // Visit levels coarse to fine (diamond-square: square step then diamond step)
-// and set every cell not yet fixed to the Δ-combination of its parents plus the
+// and set every cell not yet fixed to the Δ-combination of its parents (the
+// butterfly stencil for Scheme::butterfly, where it fits the grid) plus the
 // displacement d·δ (d: distance to the nearest parent relative to the top-level
 // half-spacing; δ: paper eq. 1 in units of `noise_unit`).
 // Corners that are not fixed get the mean of the fixed corners, or of all fixed

@@ -25,7 +25,9 @@
 
 namespace mcmd {
 
-enum class Scheme { diamond_square, triangle_edge };
+// butterfly: triangle-edge's hierarchy (its parents, its MDBU) with the
+// butterfly stencil top-down (butterfly.hpp).
+enum class Scheme { diamond_square, triangle_edge, butterfly };
 
 struct CellXY {
   int x = 0;

@@ -60,9 +60,10 @@ Shape of the fill (what it does to the terrain):
   -rs value|auto   Roughness: amplitude of the random relief added to the fill,
                    as a FRACTION OF THE KNOWN ELEVATION RANGE of the band (0.01 on
                    a DEM spanning 1000 m = about 10 m of relief). 0 (default) = a
-                   smooth fill. auto = amplitude and H measured from the known
-                   terrain around the voids, so the fill looks as rough as its
-                   surroundings.
+                   smooth fill. With m, an amplitude in elevation units (metres on
+                   a DEM in metres): -rs 20m. auto = amplitude and H measured from
+                   the known terrain around the voids, so the fill looks as rough
+                   as its surroundings.
   -H value         Hurst exponent in [0, 1] (default 0.5): how the relief fades
                    from coarse to fine scales. High H = smooth, rolling relief;
                    low H = rugged, noisy relief. Only matters with -rs > 0.

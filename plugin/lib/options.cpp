@@ -70,6 +70,23 @@ DeltaForm delta_of(const std::string& name, const std::string& value) {
   fail(name, value, "normalized or paper");
 }
 
+// RS: auto, a fraction of the known elevation range, or an amplitude in
+// elevation units with the suffix m ("300m": rs 1 of a 300 m unit).
+void set_roughness(FillParams& f, const std::string& name, const std::string& value) {
+  f.rs_auto = upper(value) == "AUTO";
+  if (f.rs_auto) return;
+  if (value.size() > 1 && (value.back() == 'm' || value.back() == 'M')) {
+    const double amplitude = number(name, value.substr(0, value.size() - 1));
+    if (amplitude < 0 || amplitude > 1e7)
+      fail(name, value, "auto, a fraction in [0, 10] or an amplitude in [0m, 10000000m]");
+    f.rs = amplitude > 0 ? 1.0 : 0.0;
+    f.noise_unit = amplitude;
+    return;
+  }
+  f.rs = number_in(name, value, 0.0, 10.0);
+  f.noise_unit = 0.0;
+}
+
 std::string path_of(const std::string& name, const std::string& value) {
   if (value.empty()) fail(name, value, "a file name");
   return value;
@@ -98,11 +115,7 @@ const std::map<std::string, Setter>& setters() {
       {"RIVER_I_BU", shape(&StateShape::I_bu, &FillParams::river_shape)},
       {"H", [](Options& o, auto& n, auto& v) { o.fill.H = number_in(n, v, 0.0, 1.0); }},
       {"RT", [](Options& o, auto& n, auto& v) { o.fill.rt = number_in(n, v, -1.0, 1.0); }},
-      {"RS",
-       [](Options& o, auto& n, auto& v) {
-         o.fill.rs_auto = upper(v) == "AUTO";
-         if (!o.fill.rs_auto) o.fill.rs = number_in(n, v, 0.0, 10.0);
-       }},
+      {"RS", [](Options& o, auto& n, auto& v) { set_roughness(o.fill, n, v); }},
       {"SEED", [](Options& o, auto& n, auto& v) { o.fill.seed = unsigned_integer(n, v); }},
       {"MORPH",
        [](Options& o, auto& n, auto& v) {

@@ -7,6 +7,7 @@ from qgis.PyQt.QtGui import QIcon
 
 from . import tool
 from .fillnodata import FillNodataAlgorithm
+from .terrain import TerrainAlgorithm
 
 try:  # the Processing plugin ships with QGIS; guard anyway so the provider still loads
     from processing.core.ProcessingConfig import ProcessingConfig, Setting
@@ -54,6 +55,7 @@ class McmdProvider(QgsProcessingProvider):
 
     def loadAlgorithms(self):  # noqa: N802
         self.addAlgorithm(FillNodataAlgorithm())
+        self.addAlgorithm(TerrainAlgorithm())
 
     def supportedOutputRasterLayerExtensions(self):  # noqa: N802
         # The tool writes any GDAL raster format; offer the same list as the GDAL provider.

@@ -188,11 +188,12 @@ def _stop(proc):
         proc.wait()
 
 
-def run(args, on_progress=None, on_info=None, is_canceled=None, poll_s=0.05):
+def run(args, on_progress=None, on_info=None, is_canceled=None, poll_s=0.05, tool_name=TOOL_NAME):
     """Run the tool; return its stderr lines. Raise ToolError on failure or cancel.
 
     `on_progress(percent)`, `on_info(line)` and `is_canceled()` are called from
     the calling thread only. On cancel the process is terminated (then killed).
+    `tool_name` names the tool in messages (its errors start with '<name>: error:').
     """
     creationflags = 0
     if sys.platform == 'win32':  # pragma: no cover
@@ -246,12 +247,13 @@ def run(args, on_progress=None, on_info=None, is_canceled=None, poll_s=0.05):
 
     err_lines = [line.rstrip() for line in err_text.splitlines() if line.strip()]
     if canceled:
-        raise ToolError(f'{TOOL_NAME} was canceled.', err_lines)
+        raise ToolError(f'{tool_name} was canceled.', err_lines)
     if proc.returncode != 0:
-        error = next((line for line in reversed(err_lines) if line.startswith(ERROR_PREFIX)), None)
+        prefix = tool_name + ': error:'
+        error = next((line for line in reversed(err_lines) if line.startswith(prefix)), None)
         if error is None:
             error = err_lines[-1] if err_lines else (
-                f'{TOOL_NAME} failed with exit status {proc.returncode} and no message')
+                f'{tool_name} failed with exit status {proc.returncode} and no message')
         raise ToolError(error, err_lines)
     return err_lines
 

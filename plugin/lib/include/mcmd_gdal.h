@@ -11,7 +11,7 @@
  *  papszOptions NAME=VALUE options, all optional (parsed in plugin/lib/options.cpp):
  *               METHOD=mcmd|paper-ds|paper-te, DELTA=normalized|paper,
  *               I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT,
- *               RS=<fraction of the known elevation range>|auto, SEED,
+ *               RS=<fraction of the known elevation range>|<amplitude>m|auto, SEED,
  *               MAX_DISTANCE (cells, 0 = unlimited), TILE_SIZE (2^n+1, 0 = auto;
  *               the size used when tiling), TILING (AUTO: rasters up to 2^21
  *               cells are filled whole; ALWAYS: tiles whatever the size),
@@ -45,6 +45,35 @@ MCMD_API const char *MCMDVersion(void);
 MCMD_API CPLErr MCMDFillNodata(GDALRasterBandH hTargetBand, GDALRasterBandH hMaskBand,
                       CSLConstList papszOptions, GDALProgressFunc pfnProgress,
                       void *pProgressArg);
+
+/* MCMDTerrain(): make a terrain into hTargetBand, opened for update: every
+ * cell is written (docs/terrain.md).
+ *
+ *  hTargetBand  band to write; its size is the terrain's.
+ *  hSketchBand  optional constraints (NULL: from scratch or a generator): a
+ *               band of the same size whose known cells are kept bit for bit
+ *               (with UPSAMPLE=K, the coarse ((W-1)/K+1)x((H-1)/K+1) raster).
+ *               Unknown cells: nodata, mask, alpha, NaN, and by UNKNOWN.
+ *  papszOptions NAME=VALUE, all optional: METHOD=mcmd|paper|paper-ds|paper-te|
+ *               mdi|none, SCHEME=ds|te|butterfly, SHARPNESS, RS=<fraction of
+ *               the constraints' range>|<amplitude>m (e.g. 300m), H, RT, SEED,
+ *               I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, DELTA,
+ *               UNKNOWN=white|black|none|<value>, ZRANGE=MIN,MAX,
+ *               SKELETON=YES, RIDGE_COUPLES, RIVER_PARTICLES,
+ *               PEAKS=iizuka|<count>, PEAKS_NOISE, PEAKS_THRESHOLD,
+ *               POINTS=col,row,z[;...], STATES=<raster>, RIDGES=<lines>,
+ *               RIVERS=<lines> (any OGR format, or a raster mask),
+ *               RIDGE_Z=Z[,Z2], RIVER_Z=Z1[,Z2], UPSAMPLE=K,
+ *               MEDIAN=N, MEDIAN_PASSES, MEDIAN_ALL=YES, NUM_THREADS.
+ *               Unknown names are errors.
+ *  pfnProgress  GDAL progress callback (may be NULL); FALSE stops it with
+ *               CPLE_UserInterrupt before anything is written.
+ *
+ * Returns CE_None on success, CE_Failure (with a CPLError message) otherwise.
+ */
+MCMD_API CPLErr MCMDTerrain(GDALRasterBandH hTargetBand, GDALRasterBandH hSketchBand,
+                   CSLConstList papszOptions, GDALProgressFunc pfnProgress,
+                   void *pProgressArg);
 
 #ifdef __cplusplus
 }

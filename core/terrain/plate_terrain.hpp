@@ -1,0 +1,15 @@
+// The default terrain method (TerrainMethod::mcmd): the thin plate of the
+// default fill method through the constraints, carrying the displacement of
+// displacement.hpp: F = S(z − d) + d. Constraint cells are kept exactly;
+// without any constraint the terrain is d itself.
+#pragma once
+
+#include "mcmd/progress.hpp"
+#include "mcmd/terrain.hpp"
+
+namespace mcmd::terrain {
+
+// Pre: unit > 0 when params.fill.rs > 0. Post: as synthesize().
+void plate_terrain(Canvas& canvas, const TerrainParams& params, double unit, const ProgressFn& progress);
+
+}  // namespace mcmd::terrain
