@@ -1,10 +1,12 @@
 // mcmd_fillnodata: fill nodata voids of a raster with MCMD (gdal_fillnodata conventions).
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "cli/args.hpp"
 #include "cli/error_log.hpp"
+#include "cli/general_options.hpp"
 #include "cli/help.hpp"
 #include "cli/run.hpp"
 #include "cpl_conv.h"
@@ -46,13 +48,15 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
   GDALAllRegister();
-  // GDAL's default block cache is 5% of RAM: with a raster streamed through
-  // tiles that makes peak memory grow with the raster. A fixed cache keeps it
-  // bounded; GDAL_CACHEMAX (environment or --config) still wins.
-  if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(kDefaultCacheBytes);
   mcmd::cli::ErrorLog log;
   try {
-    const mcmd::cli::Args args = mcmd::cli::parse_args(argc, argv);
+    const std::optional<CPLStringList> argl = mcmd::cli::apply_gdal_general_options(argc, argv);
+    if (!argl) return 0;  // e.g. --formats: printed
+    // GDAL's default block cache is 5% of RAM: with a raster streamed through
+    // tiles that makes peak memory grow with the raster. A fixed cache keeps it
+    // bounded; GDAL_CACHEMAX (environment or --config) still wins.
+    if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(kDefaultCacheBytes);
+    const mcmd::cli::Args args = mcmd::cli::parse_args(argl->size(), argl->List());
     if (args.help) return std::fputs(mcmd::cli::help_text().c_str(), stdout) < 0;
     if (args.version) return std::fputs(mcmd::cli::version_text().c_str(), stdout) < 0;
     mcmd::cli::run(args, log, args.quiet ? nullptr : term_progress);
