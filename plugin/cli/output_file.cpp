@@ -1,5 +1,7 @@
 #include "cli/output_file.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <unistd.h>
 
 #include "cpl_conv.h"
@@ -47,9 +49,13 @@ void TempOutput::discard() {
 void TempOutput::commit() {
   for (const char* s : kSidecars)
     if (!exists(tmp_ + s) && exists(dst_ + s)) VSIUnlink((dst_ + s).c_str());
-  if (driver_->Rename(dst_.c_str(), tmp_.c_str()) != CE_None)
-    throw gdal::Failure(CPLE_FileIO, "cannot rename the temporary output to '" + dst_ + "': " +
-                                         CPLGetLastErrorMsg());
+  CPLErrorReset();
+  errno = 0;
+  if (driver_->Rename(dst_.c_str(), tmp_.c_str()) != CE_None) {
+    const std::string gdal_says = CPLGetLastErrorMsg();
+    const std::string why = !gdal_says.empty() ? gdal_says : errno ? std::strerror(errno) : "unknown reason";
+    throw gdal::Failure(CPLE_FileIO, "cannot rename the temporary output to '" + dst_ + "': " + why);
+  }
   committed_ = true;
 }
 

@@ -1,12 +1,16 @@
 #include "cli/run.hpp"
 
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <memory>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "cli/background_copy.hpp"
 #include "cli/dataset.hpp"
+#include "cli/destination.hpp"
 #include "cli/output_file.hpp"
 #include "cpl_string.h"
 #include "cpl_vsi.h"
@@ -37,13 +41,37 @@ struct ProgressSlice {
   }
 };
 
+// In place needs a file we may write: GDAL's open for update of a
+// read-only file failed as "not a raster format GDAL can read".
+void check_writable(const std::string& path) {
+  if (STARTS_WITH(path.c_str(), "/vsi") || ::access(path.c_str(), W_OK) == 0) return;
+  throw Failure(CPLE_OpenFailed, "cannot open '" + path + "' for update: " + std::strerror(errno) +
+                                     " (give a dst_file to write a filled copy)");
+}
+
+// A raster GDAL reads but cannot update (its driver, or the file's form).
+[[noreturn]] void refuse_update(const std::string& path, const char* role) {
+  const std::string why = CPLGetLastErrorMsg();
+  CPLPushErrorHandler(CPLQuietErrorHandler);
+  DatasetPtr ro(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  CPLPopErrorHandler();
+  if (ro)
+    throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "' for update: GDAL's " +
+                                       ro->GetDriver()->GetDescription() +
+                                       " driver cannot change it in place (give a dst_file to write a filled copy)");
+  throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path +
+                                     "' for update: " + (why.empty() ? "not a raster format GDAL can read" : why));
+}
+
 DatasetPtr open_raster(const std::string& path, bool update, const char* role) {
   VSIStatBufL st;
   if (VSIStatL(path.c_str(), &st) != 0)
     throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "': no such file");
+  if (update) check_writable(path);
   const unsigned flags = GDAL_OF_RASTER | (update ? GDAL_OF_UPDATE : GDAL_OF_READONLY);
   CPLErrorReset();
   DatasetPtr ds(GDALDataset::Open(path.c_str(), flags));
+  if (!ds && update) refuse_update(path, role);
   if (!ds) {
     const std::string why = CPLGetLastErrorMsg();
     throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "'" +
@@ -62,6 +90,10 @@ std::vector<int> select_bands(GDALDataset& ds, const std::vector<int>& wanted) {
     if (b > count)
       throw Failure(CPLE_IllegalArg, "band " + std::to_string(b) + " is out of range: the raster has " +
                                          std::to_string(count) + " band(s)");
+    if (ds.GetRasterBand(b)->GetColorInterpretation() == GCI_AlphaBand)
+      throw Failure(CPLE_IllegalArg, "band " + std::to_string(b) +
+                                         " is an alpha band: it marks where the other bands are valid and is "
+                                         "not filled (leave out -b " + std::to_string(b) + ")");
     bands.push_back(b);
   }
   if (!wanted.empty()) return bands;
@@ -215,6 +247,7 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   GDALRasterBand* mask = open_mask(args, *src, mask_ds);
   GDALDriver* driver = output_driver(args);
   const CPLStringList co = creation_options(args, driver, log);
+  check_destination(args.dst);
   TempOutput out(args.dst, driver);
   if (fill_output_directly(driver, co) && copy_in_background(*src, args)) {
     BackgroundCopy dst(driver, args.src, out.path(), co, args.dst, [] { return g_interrupted == 0; },

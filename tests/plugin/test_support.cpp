@@ -52,16 +52,11 @@ void copy_file(const std::string& from, const std::string& to) {
   fs::copy_file(from, to, fs::copy_options::overwrite_existing);
 }
 
-RunResult run_cli(const std::vector<std::string>& args, const std::string& shell_prefix) {
+namespace {
+
+RunResult spawn(std::vector<std::string> argv) {
   TempDir io;
   const std::string out = io.file("stdout"), err = io.file("stderr");
-  std::vector<std::string> argv;
-  if (!shell_prefix.empty()) {
-    argv = {"/bin/sh", "-c", shell_prefix + " exec \"$0\" \"$@\"", MCMD_FILLNODATA_EXE};
-  } else {
-    argv = {MCMD_FILLNODATA_EXE};
-  }
-  argv.insert(argv.end(), args.begin(), args.end());
   std::vector<char*> cargv;
   for (auto& a : argv) cargv.push_back(a.data());
   cargv.push_back(nullptr);
@@ -80,6 +75,26 @@ RunResult run_cli(const std::vector<std::string>& args, const std::string& shell
   r.out = file_bytes(out);
   r.err = file_bytes(err);
   return r;
+}
+
+}  // namespace
+
+RunResult run_cli(const std::vector<std::string>& args, const std::string& shell_prefix) {
+  std::vector<std::string> argv;
+  if (!shell_prefix.empty()) {
+    argv = {"/bin/sh", "-c", shell_prefix + " exec \"$0\" \"$@\"", MCMD_FILLNODATA_EXE};
+  } else {
+    argv = {MCMD_FILLNODATA_EXE};
+  }
+  argv.insert(argv.end(), args.begin(), args.end());
+  return spawn(std::move(argv));
+}
+
+RunResult run_cli_under(const std::vector<std::string>& wrapper, const std::vector<std::string>& args) {
+  std::vector<std::string> argv = wrapper;
+  argv.push_back(MCMD_FILLNODATA_EXE);
+  argv.insert(argv.end(), args.begin(), args.end());
+  return spawn(std::move(argv));
 }
 
 int line_count(const std::string& s) {

@@ -35,6 +35,9 @@ struct RunResult {
 // Run mcmd_fillnodata with `args` (and optionally through /bin/sh with
 // `shell_prefix`, e.g. "ulimit -f 20;").
 RunResult run_cli(const std::vector<std::string>& args, const std::string& shell_prefix = "");
+// Run mcmd_fillnodata with `args` through `wrapper`, a program (absolute
+// path) and its arguments that runs the rest (e.g. setpriv, as another user).
+RunResult run_cli_under(const std::vector<std::string>& wrapper, const std::vector<std::string>& args);
 
 // Number of lines in s (a trailing newline does not start a line).
 int line_count(const std::string& s);
