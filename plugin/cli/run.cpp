@@ -11,7 +11,9 @@
 #include "cli/background_copy.hpp"
 #include "cli/dataset.hpp"
 #include "cli/destination.hpp"
+#include "cli/output_driver.hpp"
 #include "cli/output_file.hpp"
+#include "cli/verify_copy.hpp"
 #include "cpl_string.h"
 #include "cpl_vsi.h"
 #include "lib/errors.hpp"
@@ -163,32 +165,6 @@ void fill_bands(GDALDataset& source, BackgroundCopy* copy, const std::vector<int
   }
 }
 
-GDALDriver* driver_by_extension(const std::string& dst) {
-  const std::string ext = CPLGetExtension(dst.c_str());
-  if (ext.empty() || EQUAL(ext.c_str(), "tif") || EQUAL(ext.c_str(), "tiff"))
-    return GetGDALDriverManager()->GetDriverByName("GTiff");
-  auto* manager = GetGDALDriverManager();
-  for (int i = 0; i < manager->GetDriverCount(); ++i) {
-    GDALDriver* d = manager->GetDriver(i);
-    const char* exts = d->GetMetadataItem(GDAL_DMD_EXTENSIONS);
-    const bool writes = d->GetMetadataItem(GDAL_DCAP_CREATE) || d->GetMetadataItem(GDAL_DCAP_CREATECOPY);
-    if (!exts || !writes || !d->GetMetadataItem(GDAL_DCAP_RASTER)) continue;
-    const CPLStringList list(CSLTokenizeString(exts));
-    if (list.FindString(ext.c_str()) >= 0) return d;
-  }
-  return GetGDALDriverManager()->GetDriverByName("GTiff");
-}
-
-GDALDriver* output_driver(const Args& args) {
-  GDALDriver* d = args.format.empty() ? driver_by_extension(args.dst)
-                                      : GetGDALDriverManager()->GetDriverByName(args.format.c_str());
-  if (!d) throw Failure(CPLE_IllegalArg, "unknown output format '" + args.format + "' (see gdalinfo --formats)");
-  if (!d->GetMetadataItem(GDAL_DCAP_RASTER) ||
-      (!d->GetMetadataItem(GDAL_DCAP_CREATE) && !d->GetMetadataItem(GDAL_DCAP_CREATECOPY)))
-    throw Failure(CPLE_IllegalArg, std::string("output format '") + d->GetDescription() + "' cannot write rasters");
-  return d;
-}
-
 CPLStringList creation_options(const Args& args, GDALDriver* driver, ErrorLog& log) {
   CPLStringList co;
   for (const std::string& o : args.creation_options) co.AddString(o.c_str());
@@ -245,8 +221,9 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   const std::vector<int> bands = select_bands(*src, args.bands);
   DatasetPtr mask_ds;
   GDALRasterBand* mask = open_mask(args, *src, mask_ds);
-  GDALDriver* driver = output_driver(args);
+  GDALDriver* driver = output_driver(args.format, args.dst);
   const CPLStringList co = creation_options(args, driver, log);
+  check_output_driver(driver, co, *src);
   check_destination(args.dst);
   TempOutput out(args.dst, driver);
   if (fill_output_directly(driver, co) && copy_in_background(*src, args)) {
@@ -280,8 +257,12 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     fill_bands(*tmp, nullptr, bands, mask, args, ProgressSlice{progress, 0.1, 0.85});
     tmp->FlushCache();
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
-    DatasetPtr dst = create_copy(driver, out.path(), *tmp, co.List(), log, ProgressSlice{progress, 0.85, 1.0}, args.dst);
+    DatasetPtr dst = create_copy(driver, out.path(), *tmp, co.List(), log, ProgressSlice{progress, 0.85, 0.98}, args.dst);
     dst.reset();
+    if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
+    verify_copy(*tmp, out.path(), driver);  // "done" only once the copy is known to be exact
+    ProgressSlice done{progress, 0.98, 1.0};
+    ProgressSlice::call(1.0, "", &done);
   }
   if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
   out.commit();

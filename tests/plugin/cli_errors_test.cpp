@@ -86,16 +86,8 @@ TEST_P(CliErrors, OneLineNoOutputSourceUntouched) {
 
   const RunResult r = run_cli(args, c.shell_prefix);
 
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_EQ(line_count(r.err), 1) << r.err;
-  EXPECT_EQ(r.err.rfind("mcmd_fillnodata: error: ", 0), 0u) << r.err;
-  EXPECT_NE(r.err.find(c.expect_in_message), std::string::npos) << r.err;
-  EXPECT_EQ(r.out.find("100 - done"), std::string::npos);
+  expect_clean_failure(r, c.expect_in_message, dir, listing, src, before);
   EXPECT_FALSE(file_exists(dst));
-  EXPECT_EQ(dir.listing(), listing) << "a file was left behind";
-  if (file_exists(src)) {
-    EXPECT_EQ(file_bytes(src), before) << "source modified";
-  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -155,12 +147,8 @@ TEST(CliErrorsInPlace, ReadOnlyFileIsAPermissionProblem) {
                                                         "--clear-groups"},
                                                        {"-q", src})
                                        : run_cli({"-q", src});
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_EQ(line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("Permission denied"), std::string::npos) << r.err;
+  expect_clean_failure(r, "Permission denied", dir, listing, src, before);
   EXPECT_NE(r.err.find("give a dst_file"), std::string::npos) << r.err;
-  EXPECT_EQ(file_bytes(src), before);
-  EXPECT_EQ(dir.listing(), listing);
 }
 
 }  // namespace

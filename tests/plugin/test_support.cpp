@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <limits>
 #include <spawn.h>
 #include <sstream>
@@ -95,6 +96,20 @@ RunResult run_cli_under(const std::vector<std::string>& wrapper, const std::vect
   argv.push_back(MCMD_FILLNODATA_EXE);
   argv.insert(argv.end(), args.begin(), args.end());
   return spawn(std::move(argv));
+}
+
+void expect_clean_failure(const RunResult& r, const std::string& expect, const TempDir& dir,
+                          const std::vector<std::string>& listing, const std::string& src,
+                          const std::string& src_bytes) {
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("mcmd_fillnodata: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(expect), std::string::npos) << "expected '" << expect << "' in: " << r.err;
+  EXPECT_EQ(r.out.find("100 - done"), std::string::npos);
+  EXPECT_EQ(dir.listing(), listing) << "a file was left behind (or removed)";
+  if (file_exists(src)) {
+    EXPECT_EQ(file_bytes(src), src_bytes) << "source modified";
+  }
 }
 
 int line_count(const std::string& s) {

@@ -42,6 +42,13 @@ RunResult run_cli_under(const std::vector<std::string>& wrapper, const std::vect
 // Number of lines in s (a trailing newline does not start a line).
 int line_count(const std::string& s);
 
+// What a failed run must leave (gtest expectations): a non-zero exit, one
+// "mcmd_fillnodata: error: ..." line holding `expect`, no "done", `dir` as
+// it was (`listing`), and the bytes of `src` (`src_bytes`, when it exists).
+void expect_clean_failure(const RunResult& r, const std::string& expect, const TempDir& dir,
+                          const std::vector<std::string>& listing, const std::string& src,
+                          const std::string& src_bytes);
+
 struct RasterSpec {
   GDALDataType type = GDT_Int16;
   int width = 67;
