@@ -45,6 +45,14 @@ bool option_true(const CPLStringList& co, const char* name) {
   return v && CPLTestBool(v);
 }
 
+// Drivers whose output holds no data of its own.
+const char* without_data(GDALDriver* d) {
+  if (is(d, "VRT")) return "a VRT only points at other files (here a temporary one, deleted at the end)";
+  if (is(d, "MEM")) return "MEM writes no file: the raster would exist only in memory";
+  if (is(d, "WMS") || is(d, "WMTS")) return "it only describes a web service";
+  return nullptr;
+}
+
 // Drivers and options that move or resample the cells.
 const char* resamples(GDALDriver* d, const CPLStringList& co) {
   if (is(d, "MBTiles")) return "it reprojects the raster to Web Mercator tiles";
@@ -128,6 +136,7 @@ GDALDriver* output_driver(const std::string& format, const std::string& dst) {
 }
 
 void check_output_driver(GDALDriver* driver, const CPLStringList& co, GDALDataset& src) {
+  if (const char* why = without_data(driver)) refuse(driver, std::string(why) + "; write GTiff or COG instead");
   if (const char* why = resamples(driver, co))
     refuse(driver, std::string(why) + ": valid cells would change; " + kInstead);
   for (int b = 1; b <= src.GetRasterCount(); ++b) {

@@ -1,7 +1,8 @@
 // The driver a filled copy is written with, and whether it can hold the
 // raster exactly. mcmd promises bit-exact valid cells: a driver that cannot
-// store a band's type, that compresses lossily, or that reprojects or
-// resamples is refused before anything is filled, in one line naming the driver, the type and what to use instead.
+// store a band's type, that compresses lossily, that reprojects or resamples,
+// or that keeps no data of its own (VRT, MEM) is refused before anything is
+// filled, in one line naming the driver, the type and what to use instead.
 // Drivers these rules do not know are checked after writing (verify_copy).
 #pragma once
 

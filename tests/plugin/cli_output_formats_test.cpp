@@ -68,6 +68,9 @@ INSTANTIATE_TEST_SUITE_P(
         FormatCase{"DiscardLsb", GDT_Int16, {"-co", "DISCARD_LSB=2"}, "dst.tif", {"DISCARD_LSB"}},
         FormatCase{"CogReprojected", GDT_Int16, {"-of", "COG", "-co", "TILING_SCHEME=GoogleMapsCompatible"},
                    "dst.tif", {"TILING_SCHEME", "GTiff or COG"}},
+        // Drivers whose output holds no data of its own:
+        FormatCase{"VrtPointsAtOtherFiles", GDT_Int16, {"-of", "VRT"}, "dst.vrt", {"VRT", "GTiff or COG"}},
+        FormatCase{"MemWritesNoFile", GDT_Int16, {"-of", "MEM"}, "dst.mem", {"MEM", "GTiff or COG"}},
         // Not in the rules, caught by the check after writing:
         FormatCase{"FormatWithoutNodata", GDT_Int16, {"-of", "XYZ"}, "dst.xyz", {"XYZ", "nodata value"}}),
     [](const auto& info) { return std::string(info.param.name); });
