@@ -225,7 +225,8 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   const CPLStringList co = creation_options(args, driver, log);
   check_output_driver(driver, co, *src);
   check_destination(args.dst);
-  TempOutput out(args.dst, driver);
+  remove_stale_temporaries(args.dst);
+  TempOutput out(args.dst);
   if (fill_output_directly(driver, co) && copy_in_background(*src, args)) {
     BackgroundCopy dst(driver, args.src, out.path(), co, args.dst, [] { return g_interrupted == 0; },
                        src->GetRasterCount() == 1);
@@ -243,13 +244,13 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     dst.reset();  // close: flushes the last blocks
   } else {
     GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
-    TempOutput work(args.dst + ".work.tif", gtiff);  // never committed: removed at the end
+    const std::string work = out.work_path();  // removed with the temporary folder
     CPLStringList work_co;
     work_co.AddNameValue("TILED", "YES");
     work_co.AddNameValue("BIGTIFF", "IF_SAFER");
     DatasetPtr tmp =
-        create_copy(gtiff, work.path(), *src, work_co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
-    tmp = reopen_for_update(std::move(tmp), work.path(), args.dst);
+        create_copy(gtiff, work, *src, work_co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
+    tmp = reopen_for_update(std::move(tmp), work, args.dst);
     // The fill reads the work copy: it must be whole.
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
     copy_band_info(*src, *tmp);

@@ -72,6 +72,8 @@ INSTANTIATE_TEST_SUITE_P(
         FormatCase{"VrtPointsAtOtherFiles", GDT_Int16, {"-of", "VRT"}, "dst.vrt", {"VRT", "GTiff or COG"}},
         FormatCase{"MemWritesNoFile", GDT_Int16, {"-of", "MEM"}, "dst.mem", {"MEM", "GTiff or COG"}},
         // Not in the rules, caught by the check after writing:
+        FormatCase{"LossyMrfOption", GDT_Int16, {"-of", "MRF", "-co", "COMPRESS=LERC", "-co", "OPTIONS=LERC_PREC=5"},
+                   "dst.mrf", {"MRF", "does not hold band 1 exactly"}},
         FormatCase{"FormatWithoutNodata", GDT_Int16, {"-of", "XYZ"}, "dst.xyz", {"XYZ", "nodata value"}}),
     [](const auto& info) { return std::string(info.param.name); });
 
@@ -126,7 +128,8 @@ INSTANTIATE_TEST_SUITE_P(
                       FormatCase{"AsciiGridWidensInt16", GDT_Int16, {"-of", "AAIGrid"}, "dst.asc", {}},
                       FormatCase{"Erdas", GDT_Float32, {"-of", "HFA"}, "dst.img", {}},
                       FormatCase{"NetCdf", GDT_Float64, {"-of", "netCDF"}, "dst.nc", {}},
-                      FormatCase{"EnviWithHeader", GDT_Int32, {"-of", "ENVI"}, "dst.envi", {}}),
+                      FormatCase{"EnviWithHeader", GDT_Int32, {"-of", "ENVI"}, "dst.envi", {}},
+                      FormatCase{"MrfOfThreeFiles", GDT_Int16, {"-of", "MRF"}, "dst.mrf", {}}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -55,27 +55,26 @@ void copy_file(const std::string& from, const std::string& to) {
 
 namespace {
 
-RunResult spawn(std::vector<std::string> argv) {
-  TempDir io;
-  const std::string out = io.file("stdout"), err = io.file("stderr");
+RunningCli start(std::vector<std::string> argv, const TempDir& io) {
+  RunningCli c;
+  c.out = io.file("stdout");
+  c.err = io.file("stderr");
   std::vector<char*> cargv;
   for (auto& a : argv) cargv.push_back(a.data());
   cargv.push_back(nullptr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, cargv[0], &actions, nullptr, cargv.data(), environ);
+  posix_spawn_file_actions_addopen(&actions, 1, c.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, c.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int rc = posix_spawn(&c.pid, cargv[0], &actions, nullptr, cargv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (rc != 0) throw std::runtime_error("cannot start " + argv[0]);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  RunResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = file_bytes(out);
-  r.err = file_bytes(err);
-  return r;
+  return c;
+}
+
+RunResult spawn(std::vector<std::string> argv) {
+  TempDir io;
+  return finish_cli(start(std::move(argv), io));
 }
 
 }  // namespace
@@ -89,6 +88,22 @@ RunResult run_cli(const std::vector<std::string>& args, const std::string& shell
   }
   argv.insert(argv.end(), args.begin(), args.end());
   return spawn(std::move(argv));
+}
+
+RunningCli start_cli(const std::vector<std::string>& args, const TempDir& io) {
+  std::vector<std::string> argv = {MCMD_FILLNODATA_EXE};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return start(std::move(argv), io);
+}
+
+RunResult finish_cli(const RunningCli& c) {
+  int status = 0;
+  ::waitpid(c.pid, &status, 0);
+  RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = file_bytes(c.out);
+  r.err = file_bytes(c.err);
+  return r;
 }
 
 RunResult run_cli_under(const std::vector<std::string>& wrapper, const std::vector<std::string>& args) {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <sys/types.h>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,15 @@ RunResult run_cli(const std::vector<std::string>& args, const std::string& shell
 // Run mcmd_fillnodata with `args` through `wrapper`, a program (absolute
 // path) and its arguments that runs the rest (e.g. setpriv, as another user).
 RunResult run_cli_under(const std::vector<std::string>& wrapper, const std::vector<std::string>& args);
+
+// mcmd_fillnodata started in the background, its stdout and stderr going to
+// files of `io` (which must outlive it); finish_cli waits for it.
+struct RunningCli {
+  pid_t pid = -1;
+  std::string out, err;
+};
+RunningCli start_cli(const std::vector<std::string>& args, const TempDir& io);
+RunResult finish_cli(const RunningCli& running);
 
 // Number of lines in s (a trailing newline does not start a line).
 int line_count(const std::string& s);
