@@ -13,6 +13,7 @@
 
 #include "mcmd/fill_raster.hpp"
 #include "raster/coarse_guide.hpp"
+#include "raster/frame.hpp"
 #include "raster/tiles/tiled_fill.hpp"
 #include "raster/void_components.hpp"
 #include "raster/void_field.hpp"
@@ -277,6 +278,7 @@ void fill_whole_raster(const RasterAccess& raster, const FillParams& params, con
     return;
   }
   if (st.known_cells == 0) throw std::invalid_argument("the raster has no known cell to fill from");
+  check_range(lo, hi);
 
   FillParams p = params;
   if (p.noise_unit <= 0) p.noise_unit = hi - lo;
