@@ -33,6 +33,9 @@ class BandAccess {
   // Valid while this object lives. read/write throw Failure on I/O errors.
   RasterAccess access();
 
+  // Whether the target is the source itself (a fill in place).
+  bool in_place() const { return in_place_; }
+
   // Whether the nodata value marks voids (besides NaN and masks).
   bool nodata_marks_voids() const;
 
