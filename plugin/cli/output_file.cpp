@@ -4,6 +4,8 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <algorithm>
+#include <mutex>
 #include <unistd.h>
 #include <vector>
 
@@ -59,6 +61,18 @@ void remove_tree(const std::string& path) {
     VSIUnlink(path.c_str());
 }
 
+// The folders of the TempOutputs that exist.
+std::mutex g_active_mutex;
+std::vector<std::string> g_active;
+
+void set_active(const std::string& folder, bool active) {
+  const std::lock_guard lock(g_active_mutex);
+  if (active)
+    g_active.push_back(folder);
+  else
+    g_active.erase(std::remove(g_active.begin(), g_active.end(), folder), g_active.end());
+}
+
 void move(const std::string& from, const std::string& to) {
   errno = 0;
   if (VSIRename(from.c_str(), to.c_str()) != 0)
@@ -67,6 +81,16 @@ void move(const std::string& from, const std::string& to) {
 }
 
 }  // namespace
+
+bool writing_temporaries() {
+  const std::lock_guard lock(g_active_mutex);
+  return !g_active.empty();
+}
+
+void remove_active_temporaries() {
+  const std::lock_guard lock(g_active_mutex);
+  for (const std::string& folder : g_active) remove_tree(folder);
+}
 
 void remove_stale_temporaries(const std::string& dst) {
   const auto remove_if_gone = [](const std::string& path, long pid) {
@@ -86,12 +110,14 @@ TempOutput::TempOutput(std::string dst)
   if (VSIMkdir(folder_.c_str(), 0755) != 0)
     throw gdal::Failure(CPLE_FileIO, "cannot write '" + dst_ + "': cannot create the temporary folder '" + folder_ +
                                          "': " + (errno ? std::strerror(errno) : "unknown reason"));
+  set_active(folder_, true);
 }
 
 TempOutput::~TempOutput() {
   CPLPushErrorHandler(CPLQuietErrorHandler);
   remove_tree(folder_);
   CPLPopErrorHandler();
+  set_active(folder_, false);
 }
 
 std::string TempOutput::work_path() const {

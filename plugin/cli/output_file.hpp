@@ -20,6 +20,12 @@ namespace mcmd::cli {
 // earlier versions wrote) whose process no longer exists on this machine.
 void remove_stale_temporaries(const std::string& dst);
 
+// Whether a TempOutput exists (a copy is being written), and removing the
+// folders of those that exist: for a run abandoned from another thread
+// (cancel_watchdog.hpp).
+bool writing_temporaries();
+void remove_active_temporaries();
+
 class TempOutput {
  public:
   // Creates the temporary folder. Throws gdal::Failure.

@@ -1,5 +1,6 @@
 #include "cli/run.hpp"
 
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -11,6 +12,7 @@
 #include "cli/background_copy.hpp"
 #include "cli/dataset.hpp"
 #include "cli/destination.hpp"
+#include "cli/disk_space.hpp"
 #include "cli/output_driver.hpp"
 #include "cli/output_file.hpp"
 #include "cli/verify_copy.hpp"
@@ -26,7 +28,9 @@ using gdal::Failure;
 
 namespace {
 
-volatile std::sig_atomic_t g_interrupted = 0;
+// Set from a signal handler, read by other threads: a lock-free atomic.
+std::atomic<int> g_interrupted{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 // A slice [lo, hi] of the user's progress bar that also honours SIGINT.
 struct ProgressSlice {
@@ -190,6 +194,26 @@ bool fill_output_directly(GDALDriver* driver, const CPLStringList& co) {
   return !compress || EQUAL(compress, "NONE");
 }
 
+// The bytes a copy takes on disk at its peak: the uncompressed raster,
+// filled where it lies, or the uncompressed work file and, unless the output
+// is known to be compressed, as much again for the output.
+bool compressed_output(GDALDriver* driver, const CPLStringList& co) {
+  const char* compress = co.FetchNameValue("COMPRESS");
+  return (compress && !EQUAL(compress, "NONE")) || EQUAL(driver->GetDescription(), "COG");
+}
+
+std::uint64_t space_needed(GDALDataset& src, GDALDriver* driver, const CPLStringList& co) {
+  const std::uint64_t raster = uncompressed_bytes(src);
+  if (fill_output_directly(driver, co) || compressed_output(driver, co)) return raster;
+  return 2 * raster;
+}
+
+std::string space_reason(GDALDriver* driver, const CPLStringList& co) {
+  if (fill_output_directly(driver, co)) return "the uncompressed raster";
+  if (compressed_output(driver, co)) return "the uncompressed work file";
+  return "the uncompressed work file and the output";
+}
+
 // A raster the fill reads whole once and writes at the end (the core's
 // small-raster path): its copy is made while the fill works.
 bool copy_in_background(GDALDataset& src, const Args& args) {
@@ -226,6 +250,7 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   check_output_driver(driver, co, *src);
   check_destination(args.dst);
   remove_stale_temporaries(args.dst);
+  check_space(args.dst, space_needed(*src, driver, co), space_reason(driver, co));
   TempOutput out(args.dst);
   if (fill_output_directly(driver, co) && copy_in_background(*src, args)) {
     BackgroundCopy dst(driver, args.src, out.path(), co, args.dst, [] { return g_interrupted == 0; },
@@ -272,6 +297,8 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
 }  // namespace
 
 void request_interrupt() { g_interrupted = 1; }
+
+bool interrupted() { return g_interrupted != 0; }
 
 void run(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   if (args.dst.empty())
