@@ -4,9 +4,11 @@
 // the source untouched. A raster that cannot fit is refused before writing.
 #include <chrono>
 #include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <gtest/gtest.h>
+#include <optional>
 #include <sys/statvfs.h>
 #include <thread>
 #include <unistd.h>
@@ -36,6 +38,14 @@ double free_gb(const std::string& dir) {
   struct statvfs st {};
   if (::statvfs(dir.c_str(), &st) != 0) return 0;
   return static_cast<double>(st.f_bavail) * static_cast<double>(st.f_frsize) / 1e9;
+}
+
+// Whether process `pid` has `path` open (Linux: /proc/<pid>/fd).
+bool has_open(pid_t pid, const std::string& path) {
+  std::error_code ec;
+  for (const auto& fd : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/fd", ec))
+    if (std::filesystem::read_symlink(fd.path(), ec) == path) return true;
+  return false;
 }
 
 struct Stopped {
@@ -85,9 +95,13 @@ TEST_P(CliCancel, StopsAFillInPlaceWithinASecondSayingWhatIsLeft) {
   make_raster(src, spec);
   const std::string before = file_bytes(src);
   const RunningCli run = start_cli({"-q", "-rs", "auto", "-threads", "1", src}, io);
-  const auto started = Clock::now();
-  const Stopped s =
-      signal_when(run, GetParam(), [&] { return Clock::now() - started > std::chrono::milliseconds(250); });
+  // Signalled once it has opened the source (its handlers are set: a
+  // sanitizer build takes a while to reach main), and a little later.
+  std::optional<Clock::time_point> opened;
+  const Stopped s = signal_when(run, GetParam(), [&] {
+    if (!opened && has_open(run.pid, src)) opened = Clock::now();
+    return opened && Clock::now() - *opened > std::chrono::milliseconds(150);
+  });
   EXPECT_LT(s.seconds, 1.0);
   EXPECT_EQ(s.result.exit_code, 1) << "the fill ended first?";
   EXPECT_EQ(line_count(s.result.err), 1);
