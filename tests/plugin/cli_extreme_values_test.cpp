@@ -60,11 +60,7 @@ class ExtremeValues : public ::testing::TestWithParam<ExtremeCase> {};
 TEST_P(ExtremeValues, NodataKeptNoFilledCellIsNodataNaNOrInfinite) {
   const ExtremeCase& c = GetParam();
   TempDir dir;
-  RasterSpec spec;
-  spec.type = c.type;
-  spec.nodata = c.nodata;
-  spec.base = c.base;
-  spec.scale = c.scale;
+  const RasterSpec spec = spec_of(c.type, c.nodata, c.base, c.scale);
   const std::string src = dir.file("src.tif");
   make_raster(src, spec);
   const auto in = raw_band(src);

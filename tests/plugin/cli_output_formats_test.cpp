@@ -21,13 +21,9 @@ struct FormatCase {
 
 std::ostream& operator<<(std::ostream& os, const FormatCase& c) { return os << c.name; }
 
-RasterSpec spec_of(GDALDataType type) {
-  RasterSpec spec;
-  spec.type = type;
-  spec.nodata = type == GDT_Byte || type == GDT_UInt16 || type == GDT_UInt64 ? 0.0 : -9999.0;
-  spec.base = 20;
-  spec.scale = type == GDT_Byte ? 200 : 1000;
-  return spec;
+RasterSpec format_spec(GDALDataType type) {
+  const bool unsigned_type = type == GDT_Byte || type == GDT_UInt16 || type == GDT_UInt64;
+  return spec_of(type, unsigned_type ? 0.0 : -9999.0, 20, type == GDT_Byte ? 200 : 1000);
 }
 
 std::vector<std::string> with_files(std::vector<std::string> args, const std::string& src, const std::string& dst) {
@@ -43,7 +39,7 @@ TEST_P(RefusedOutput, OneLineNamingDriverAndWhatToUse) {
   const FormatCase& c = GetParam();
   TempDir dir;
   const std::string src = dir.file("src.tif");
-  make_raster(src, spec_of(c.type));
+  make_raster(src, format_spec(c.type));
   const std::string before = file_bytes(src);
   const auto listing = dir.listing();
   const RunResult r = run_cli(with_files(c.args, src, dir.file(c.dst)));
@@ -84,7 +80,7 @@ class AcceptedOutput : public ::testing::TestWithParam<FormatCase> {};
 TEST_P(AcceptedOutput, EveryValidCellKept) {
   const FormatCase& c = GetParam();
   TempDir dir;
-  const RasterSpec spec = spec_of(c.type);
+  const RasterSpec spec = format_spec(c.type);
   const std::string src = dir.file("src.tif"), dst = dir.file(c.dst);
   make_raster(src, spec);
   const RunResult r = run_cli(with_files(c.args, src, dst));

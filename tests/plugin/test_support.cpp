@@ -134,6 +134,15 @@ int line_count(const std::string& s) {
   return n;
 }
 
+RasterSpec spec_of(GDALDataType type, std::optional<double> nodata, double base, double scale) {
+  RasterSpec spec;
+  spec.type = type;
+  spec.nodata = nodata;
+  spec.base = base;
+  spec.scale = scale;
+  return spec;
+}
+
 bool is_test_void(int x, int y, int w, int h) {
   const double cx = w * 0.35, cy = h * 0.4, r = std::min(w, h) * 0.18;
   if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) return true;  // blob

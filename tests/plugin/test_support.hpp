@@ -73,6 +73,9 @@ struct RasterSpec {
   std::vector<std::string> creation_options;
 };
 
+// The standard spec with this type, nodata value and terrain range.
+RasterSpec spec_of(GDALDataType type, std::optional<double> nodata, double base, double scale);
+
 // Is (x, y) a void of the standard test pattern (a blob, a stripe, a border
 // notch and single cells)?
 bool is_test_void(int x, int y, int w, int h);
