@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "raster/frame.hpp"
 #include "raster/tiles/tile_layout.hpp"
 #include "raster/tiles/tiled_fill.hpp"
 #include "raster/whole_raster.hpp"
@@ -47,13 +48,27 @@ void check_inputs(const RasterAccess& raster, const TilingParams& tiling) {
 
 }  // namespace
 
-void fill_raster(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
-                 const ProgressFn& progress, const RasterFillHooks& hooks) {
-  check_inputs(raster, tiling);
+namespace {
+
+void fill_by_path(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
+                  const ProgressFn& progress, const RasterFillHooks& hooks) {
   if (fills_whole(raster.width, raster.height, params, tiling))
     detail::fill_whole_raster(raster, params, tiling, progress, hooks);
   else
     detail::tiled_fill(raster, params, tiling, progress, hooks);
+}
+
+}  // namespace
+
+void fill_raster(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
+                 const ProgressFn& progress, const RasterFillHooks& hooks) {
+  check_inputs(raster, tiling);
+  try {
+    fill_by_path(raster, params, tiling, progress, hooks);
+  } catch (const detail::ExtremeRange& e) {  // nothing written yet: again, in a frame (raster/frame.hpp)
+    const detail::Frame frame = detail::frame_for(e.lo, e.hi);
+    fill_by_path(detail::framed(raster, frame), detail::framed(params, frame), tiling, progress, hooks);
+  }
 }
 
 }  // namespace mcmd

@@ -15,6 +15,7 @@
 #include "morphology/channels.hpp"
 #include "morphology/lines.hpp"
 #include "raster/coarse_guide.hpp"
+#include "raster/frame.hpp"
 #include "raster/tiles/tiled_fill.hpp"
 #include "raster/void_components.hpp"
 #include "raster/void_field.hpp"
@@ -301,6 +302,7 @@ void fill_whole_raster(const RasterAccess& raster, const FillParams& params, con
     return;
   }
   if (st.known_cells == 0) throw std::invalid_argument("the raster has no known cell to fill from");
+  check_range(lo, hi);
 
   FillParams p = params;
   if (p.noise_unit <= 0) p.noise_unit = hi - lo;

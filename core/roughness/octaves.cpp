@@ -122,6 +122,11 @@ template <class SplineRow>
 // instruction where the baseline takes 2: the noise's time on White Mountains
 // blobs fell by 16 % (the nodes' loads stay one by one). `node` and `scratch`
 // are buffers reused by the caller.
+// Every lambda below that takes or returns a Quad is always inlined: a lambda
+// is not cloned with the function around it, so one compiled out of line (as
+// GCC did in the sanitizer build) had the baseline ABI while the AVX2 clone
+// called it with the AVX one, and read its Quad argument as garbage: node
+// offsets far outside `node`.
 MCMD_AVX2_CLONES
 void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cells, std::vector<double>& node,
                 std::vector<double>& scratch) {
@@ -129,7 +134,7 @@ void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cel
   const double c = std::cos(j * kGolden) / s, sn = std::sin(j * kGolden) / s;
   const double ox = 0.618 * j, oy = 0.382 * j;
   // (u, v) of cells at x (one or a Quad), y.
-  const auto uv = [&](auto x, double y, auto& u, auto& v) {
+  const auto uv = [&](auto x, double y, auto& u, auto& v) __attribute__((always_inline)) {
     u = c * x + sn * y + ox;
     v = -sn * x + c * y + oy;
   };
@@ -162,7 +167,7 @@ void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cel
   for (int b = 0; b < nv; ++b)
     for (int a = 0; a < nu; ++a) node[static_cast<std::size_t>(b) * nu + a] = std::sqrt(3.0) * hash(i0 + a, j0 + b);
   // A point's (u, v), the origin of its 4×4 nodes in `node`, and its weights.
-  const auto locate = [&](auto x, double y, auto& first_node, auto wu, auto wv) {
+  const auto locate = [&](auto x, double y, auto& first_node, auto wu, auto wv) __attribute__((always_inline)) {
     decltype(x) u, v;
     uv(x, y, u, v);
     const auto fu = floor_of(u), fv = floor_of(v);
@@ -171,7 +176,8 @@ void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cel
     first_node = (fv - static_cast<double>(j0 + 1)) * nu + (fu - static_cast<double>(i0 + 1));  // exact: small integers
   };
   // The spline at points x0 + step·k, k < n, of row y, where `wanted` (null:
-  // all), into `to` (k-th entry; others untouched).
+  // all), into `to` (k-th entry; others untouched). Four points are evaluated
+  // together when any is wanted; only the wanted ones are stored.
   const auto spline_row = [&](double x0, double y, int n, const std::uint8_t* wanted, double* to)
                               __attribute__((always_inline)) {
     int k = 0;
@@ -189,11 +195,12 @@ void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cel
       const double* p1 = node.data() + at[1];
       const double* p2 = node.data() + at[2];
       const double* p3 = node.data() + at[3];
-      const Quad sum = bicubic(wu, wv, [&](int r, int a) {
+      const Quad sum = bicubic(wu, wv, [&](int r, int a) __attribute__((always_inline)) {
         const int i = r * nu + a;
         return Quad{p0[i], p1[i], p2[i], p3[i]};
       });
-      for (int lane = 0; lane < 4; ++lane) to[k + lane] = sum[lane];
+      for (int lane = 0; lane < 4; ++lane)
+        if (!wanted || wanted[k + lane]) to[k + lane] = sum[lane];
     }
     for (; k < n; ++k) {  // the last few
       if (wanted && !wanted[k]) continue;

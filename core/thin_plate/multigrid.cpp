@@ -202,7 +202,7 @@ double dot_free(const Lattice& lat, const std::vector<double>& a, const std::vec
 
 }  // namespace
 
-int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations) {
+int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations, const ProgressFn& progress) {
   if (finest.spans.empty()) return 0;
   const int threads = schedule_.threads;
   const int top = static_cast<int>(coarse_.size()) - 1;
@@ -255,6 +255,7 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations) {
       }
     });
     ++it;
+    report(progress, static_cast<double>(it) / max_iterations);
     if (std::sqrt(dot_free(finest, r, r, threads)) <= rel_tol * r0) break;
     precondition(r, zv);
     // Polak-Ribière β = zᵀ(r - r_old) / rz (the V-cycle is not symmetric),

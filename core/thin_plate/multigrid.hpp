@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "mcmd/progress.hpp"
 #include "thin_plate/lattice.hpp"
 
 namespace mcmd {
@@ -40,8 +41,10 @@ class Multigrid {
   // the coarse corrections ignore them (the preconditioner stays close
   // enough for weak springs). Dot products run over the spans in a fixed
   // order: deterministic.
+  // `progress` is told each iteration (it / max_iterations): a cancel stops
+  // the solve there (Cancelled).
   // Returns the iterations done.
-  int solve_pcg(Lattice& finest, double rel_tol, int max_iterations);
+  int solve_pcg(Lattice& finest, double rel_tol, int max_iterations, const ProgressFn& progress = {});
 
  private:
   void cycle(Lattice& fine, const double* rhs, int k);

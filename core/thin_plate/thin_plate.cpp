@@ -299,7 +299,8 @@ void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule
   if (schedule.pull_length > 0) attach_pull(fine, schedule.pull_length);
   Multigrid mg(fine, schedule.vcycle);
   if (schedule.pcg_tol > 0) {
-    mg.solve_pcg(fine, pcg_tolerance(fine, field.farthest, schedule), schedule.pcg_max_iterations);
+    mg.solve_pcg(fine, pcg_tolerance(fine, field.farthest, schedule), schedule.pcg_max_iterations,
+                 sub_progress(progress, 0.4, 0.8));
     report(progress, 0.8);
   } else {
     for (int c = 0; c < schedule.v_cycles; ++c) {

@@ -20,9 +20,9 @@ const std::map<std::string, std::string>& option_flags() {
 }
 
 int band_number(const std::string& s) {
-  char* end = nullptr;
-  const long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0' || v < 1 || v > 1000000)
+  const bool digits = !s.empty() && s.size() <= 7 && s.find_first_not_of("0123456789") == std::string::npos;
+  const long v = digits ? std::strtol(s.c_str(), nullptr, 10) : 0;
+  if (v < 1 || v > 1000000)
     throw UsageError("-b expects a band number >= 1, got '" + s + "'");
   return static_cast<int>(v);
 }

@@ -6,6 +6,22 @@ namespace mcmd::cli {
 
 using gdal::Failure;
 
+namespace {
+
+// GDAL's message about the temporary `path`, naming `shown` instead.
+void replace_all(std::string& msg, const std::string& from, const std::string& to) {
+  for (std::size_t at = msg.find(from); !from.empty() && at != std::string::npos; at = msg.find(from, at + to.size()))
+    msg.replace(at, from.size(), to);
+}
+
+std::string named_as(std::string msg, const std::string& path, const std::string& shown) {
+  replace_all(msg, path, shown);
+  replace_all(msg, CPLGetFilename(path.c_str()), CPLGetFilename(shown.c_str()));
+  return msg;
+}
+
+}  // namespace
+
 DatasetPtr create_copy(GDALDriver* driver, const std::string& path, GDALDataset& from, CSLConstList co,
                        ErrorLog& log, GDALProgressFunc progress, void* progress_arg, const std::string& shown) {
   log.reset();
@@ -13,7 +29,7 @@ DatasetPtr create_copy(GDALDriver* driver, const std::string& path, GDALDataset&
   if (!out) {
     if (CPLGetLastErrorNo() == CPLE_UserInterrupt) throw Failure(CPLE_UserInterrupt, "cancelled by the user");
     const std::string why = log.first_failure().empty() ? CPLGetLastErrorMsg() : log.first_failure();
-    throw Failure(CPLE_FileIO, "cannot write '" + shown + "': " + why);
+    throw Failure(CPLE_FileIO, "cannot write '" + shown + "': " + named_as(why, path, shown));
   }
   return out;
 }

@@ -38,6 +38,8 @@ Input and output:
                    -co COMPRESS=DEFLATE.
   -q               Quiet: print no progress.
   --help           This text.    --version   Version of mcmd and GDAL.
+  GDAL's general options are accepted too (--config KEY VALUE, --debug on,
+  --formats, --optfile file, ...; see --help-general).
 
 Shape of the fill (what it does to the terrain):
   -method m        mcmd (default): smooth, thin-plate-like surface that follows

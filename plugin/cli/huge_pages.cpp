@@ -7,6 +7,11 @@
 // already touched (malloc reusing freed memory), the advice changes nothing.
 // Only the executable replaces operator new: the C API library leaves its
 // host's allocator alone. Measurements: docs/default-method.md, session 10.
+//
+// The whole family is replaced (plain, array, nothrow, aligned, and every
+// delete), all on malloc/aligned_alloc and free: a block taken by one form
+// and given back by another (std::stable_sort's buffer: nothrow new, plain
+// delete) then meets the same allocator, as address sanitizers check.
 #include <cstdint>
 #include <cstdlib>
 #include <new>
@@ -25,22 +30,64 @@ void advise_huge_pages(void* p, std::size_t n) {
   if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // advice: errors ignored
 }
 
-}  // namespace
-
-void* operator new(std::size_t n) {
+// malloc (align 0) or aligned_alloc, advised; nullptr when memory is out.
+void* take(std::size_t n, std::size_t align) {
   if (n == 0) n = 1;
+  void* p = nullptr;
+  if (align == 0) {
+    p = std::malloc(n);
+  } else {
+    const std::size_t rounded = (n + align - 1) / align * align;  // aligned_alloc wants a multiple
+    p = rounded >= n ? std::aligned_alloc(align, rounded) : nullptr;
+  }
+  if (p && n >= kAdviseFrom) advise_huge_pages(p, n);
+  return p;
+}
+
+// take(), calling the new handler until it succeeds (or throws bad_alloc).
+void* take_or_throw(std::size_t n, std::size_t align) {
   for (;;) {
-    if (void* p = std::malloc(n)) {
-      if (n >= kAdviseFrom) advise_huge_pages(p, n);
-      return p;
-    }
+    if (void* p = take(n, align)) return p;
     const std::new_handler handler = std::get_new_handler();
     if (!handler) throw std::bad_alloc();
     handler();
   }
 }
 
-// The matching deletes, so that allocation checkers (valgrind) see malloc
-// paired with free.
+void* take_or_null(std::size_t n, std::size_t align) noexcept {
+  try {
+    return take_or_throw(n, align);
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+std::size_t alignment(std::align_val_t a) { return static_cast<std::size_t>(a); }
+
+}  // namespace
+
+void* operator new(std::size_t n) { return take_or_throw(n, 0); }
+void* operator new[](std::size_t n) { return take_or_throw(n, 0); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept { return take_or_null(n, 0); }
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { return take_or_null(n, 0); }
+void* operator new(std::size_t n, std::align_val_t a) { return take_or_throw(n, alignment(a)); }
+void* operator new[](std::size_t n, std::align_val_t a) { return take_or_throw(n, alignment(a)); }
+void* operator new(std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return take_or_null(n, alignment(a));
+}
+void* operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return take_or_null(n, alignment(a));
+}
+
 void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }

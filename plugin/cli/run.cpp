@@ -1,13 +1,21 @@
 #include "cli/run.hpp"
 
+#include <atomic>
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <memory>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "cli/background_copy.hpp"
 #include "cli/dataset.hpp"
+#include "cli/destination.hpp"
+#include "cli/disk_space.hpp"
+#include "cli/output_driver.hpp"
 #include "cli/output_file.hpp"
+#include "cli/verify_copy.hpp"
 #include "cpl_string.h"
 #include "cpl_vsi.h"
 #include "lib/errors.hpp"
@@ -20,7 +28,9 @@ using gdal::Failure;
 
 namespace {
 
-volatile std::sig_atomic_t g_interrupted = 0;
+// Set from a signal handler, read by other threads: a lock-free atomic.
+std::atomic<int> g_interrupted{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 // A slice [lo, hi] of the user's progress bar that also honours SIGINT.
 struct ProgressSlice {
@@ -37,13 +47,37 @@ struct ProgressSlice {
   }
 };
 
+// In place needs a file we may write: GDAL's open for update of a
+// read-only file failed as "not a raster format GDAL can read".
+void check_writable(const std::string& path) {
+  if (STARTS_WITH(path.c_str(), "/vsi") || ::access(path.c_str(), W_OK) == 0) return;
+  throw Failure(CPLE_OpenFailed, "cannot open '" + path + "' for update: " + std::strerror(errno) +
+                                     " (give a dst_file to write a filled copy)");
+}
+
+// A raster GDAL reads but cannot update (its driver, or the file's form).
+[[noreturn]] void refuse_update(const std::string& path, const char* role) {
+  const std::string why = CPLGetLastErrorMsg();
+  CPLPushErrorHandler(CPLQuietErrorHandler);
+  DatasetPtr ro(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  CPLPopErrorHandler();
+  if (ro)
+    throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "' for update: GDAL's " +
+                                       ro->GetDriver()->GetDescription() +
+                                       " driver cannot change it in place (give a dst_file to write a filled copy)");
+  throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path +
+                                     "' for update: " + (why.empty() ? "not a raster format GDAL can read" : why));
+}
+
 DatasetPtr open_raster(const std::string& path, bool update, const char* role) {
   VSIStatBufL st;
   if (VSIStatL(path.c_str(), &st) != 0)
     throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "': no such file");
+  if (update) check_writable(path);
   const unsigned flags = GDAL_OF_RASTER | (update ? GDAL_OF_UPDATE : GDAL_OF_READONLY);
   CPLErrorReset();
   DatasetPtr ds(GDALDataset::Open(path.c_str(), flags));
+  if (!ds && update) refuse_update(path, role);
   if (!ds) {
     const std::string why = CPLGetLastErrorMsg();
     throw Failure(CPLE_OpenFailed, std::string("cannot open ") + role + " '" + path + "'" +
@@ -62,6 +96,10 @@ std::vector<int> select_bands(GDALDataset& ds, const std::vector<int>& wanted) {
     if (b > count)
       throw Failure(CPLE_IllegalArg, "band " + std::to_string(b) + " is out of range: the raster has " +
                                          std::to_string(count) + " band(s)");
+    if (ds.GetRasterBand(b)->GetColorInterpretation() == GCI_AlphaBand)
+      throw Failure(CPLE_IllegalArg, "band " + std::to_string(b) +
+                                         " is an alpha band: it marks where the other bands are valid and is "
+                                         "not filled (leave out -b " + std::to_string(b) + ")");
     bands.push_back(b);
   }
   if (!wanted.empty()) return bands;
@@ -131,32 +169,6 @@ void fill_bands(GDALDataset& source, BackgroundCopy* copy, const std::vector<int
   }
 }
 
-GDALDriver* driver_by_extension(const std::string& dst) {
-  const std::string ext = CPLGetExtension(dst.c_str());
-  if (ext.empty() || EQUAL(ext.c_str(), "tif") || EQUAL(ext.c_str(), "tiff"))
-    return GetGDALDriverManager()->GetDriverByName("GTiff");
-  auto* manager = GetGDALDriverManager();
-  for (int i = 0; i < manager->GetDriverCount(); ++i) {
-    GDALDriver* d = manager->GetDriver(i);
-    const char* exts = d->GetMetadataItem(GDAL_DMD_EXTENSIONS);
-    const bool writes = d->GetMetadataItem(GDAL_DCAP_CREATE) || d->GetMetadataItem(GDAL_DCAP_CREATECOPY);
-    if (!exts || !writes || !d->GetMetadataItem(GDAL_DCAP_RASTER)) continue;
-    const CPLStringList list(CSLTokenizeString(exts));
-    if (list.FindString(ext.c_str()) >= 0) return d;
-  }
-  return GetGDALDriverManager()->GetDriverByName("GTiff");
-}
-
-GDALDriver* output_driver(const Args& args) {
-  GDALDriver* d = args.format.empty() ? driver_by_extension(args.dst)
-                                      : GetGDALDriverManager()->GetDriverByName(args.format.c_str());
-  if (!d) throw Failure(CPLE_IllegalArg, "unknown output format '" + args.format + "' (see gdalinfo --formats)");
-  if (!d->GetMetadataItem(GDAL_DCAP_RASTER) ||
-      (!d->GetMetadataItem(GDAL_DCAP_CREATE) && !d->GetMetadataItem(GDAL_DCAP_CREATECOPY)))
-    throw Failure(CPLE_IllegalArg, std::string("output format '") + d->GetDescription() + "' cannot write rasters");
-  return d;
-}
-
 CPLStringList creation_options(const Args& args, GDALDriver* driver, ErrorLog& log) {
   CPLStringList co;
   for (const std::string& o : args.creation_options) co.AddString(o.c_str());
@@ -180,6 +192,26 @@ bool fill_output_directly(GDALDriver* driver, const CPLStringList& co) {
   if (!EQUAL(driver->GetDescription(), "GTiff")) return false;
   const char* compress = co.FetchNameValue("COMPRESS");
   return !compress || EQUAL(compress, "NONE");
+}
+
+// The bytes a copy takes on disk at its peak: the uncompressed raster,
+// filled where it lies, or the uncompressed work file and, unless the output
+// is known to be compressed, as much again for the output.
+bool compressed_output(GDALDriver* driver, const CPLStringList& co) {
+  const char* compress = co.FetchNameValue("COMPRESS");
+  return (compress && !EQUAL(compress, "NONE")) || EQUAL(driver->GetDescription(), "COG");
+}
+
+std::uint64_t space_needed(GDALDataset& src, GDALDriver* driver, const CPLStringList& co) {
+  const std::uint64_t raster = uncompressed_bytes(src);
+  if (fill_output_directly(driver, co) || compressed_output(driver, co)) return raster;
+  return 2 * raster;
+}
+
+std::string space_reason(GDALDriver* driver, const CPLStringList& co) {
+  if (fill_output_directly(driver, co)) return "the uncompressed raster";
+  if (compressed_output(driver, co)) return "the uncompressed work file";
+  return "the uncompressed work file and the output";
 }
 
 // A raster the fill reads whole once and writes at the end (the core's
@@ -213,9 +245,13 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   const std::vector<int> bands = select_bands(*src, args.bands);
   DatasetPtr mask_ds;
   GDALRasterBand* mask = open_mask(args, *src, mask_ds);
-  GDALDriver* driver = output_driver(args);
+  GDALDriver* driver = output_driver(args.format, args.dst);
   const CPLStringList co = creation_options(args, driver, log);
-  TempOutput out(args.dst, driver);
+  check_output_driver(driver, co, *src);
+  check_destination(args.dst);
+  remove_stale_temporaries(args.dst);
+  check_space(args.dst, space_needed(*src, driver, co), space_reason(driver, co));
+  TempOutput out(args.dst);
   if (fill_output_directly(driver, co) && copy_in_background(*src, args)) {
     BackgroundCopy dst(driver, args.src, out.path(), co, args.dst, [] { return g_interrupted == 0; },
                        src->GetRasterCount() == 1);
@@ -233,13 +269,13 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     dst.reset();  // close: flushes the last blocks
   } else {
     GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
-    TempOutput work(args.dst + ".work.tif", gtiff);  // never committed: removed at the end
+    const std::string work = out.work_path();  // removed with the temporary folder
     CPLStringList work_co;
     work_co.AddNameValue("TILED", "YES");
     work_co.AddNameValue("BIGTIFF", "IF_SAFER");
     DatasetPtr tmp =
-        create_copy(gtiff, work.path(), *src, work_co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
-    tmp = reopen_for_update(std::move(tmp), work.path(), args.dst);
+        create_copy(gtiff, work, *src, work_co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
+    tmp = reopen_for_update(std::move(tmp), work, args.dst);
     // The fill reads the work copy: it must be whole.
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
     copy_band_info(*src, *tmp);
@@ -247,8 +283,12 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     fill_bands(*tmp, nullptr, bands, mask, args, ProgressSlice{progress, 0.1, 0.85});
     tmp->FlushCache();
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
-    DatasetPtr dst = create_copy(driver, out.path(), *tmp, co.List(), log, ProgressSlice{progress, 0.85, 1.0}, args.dst);
+    DatasetPtr dst = create_copy(driver, out.path(), *tmp, co.List(), log, ProgressSlice{progress, 0.85, 0.98}, args.dst);
     dst.reset();
+    if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
+    verify_copy(*tmp, out.path(), driver);  // "done" only once the copy is known to be exact
+    ProgressSlice done{progress, 0.98, 1.0};
+    ProgressSlice::call(1.0, "", &done);
   }
   if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
   out.commit();
@@ -257,6 +297,8 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
 }  // namespace
 
 void request_interrupt() { g_interrupted = 1; }
+
+bool interrupted() { return g_interrupted != 0; }
 
 void run(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   if (args.dst.empty())

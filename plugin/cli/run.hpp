@@ -12,7 +12,9 @@ namespace mcmd::cli {
 // message on any failure, after removing any temporary output.
 void run(const Args& args, ErrorLog& log, GDALProgressFunc progress);
 
-// Set by SIGINT: the next progress report cancels the run cleanly.
+// Set by SIGINT and SIGTERM (async-signal-safe): the next progress report
+// cancels the run cleanly.
 void request_interrupt();
+bool interrupted();
 
 }  // namespace mcmd::cli

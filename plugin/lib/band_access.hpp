@@ -36,6 +36,8 @@ class BandAccess {
   GDALDataType source_type() const { return source_.GetRasterDataType(); }
   // The source band's dataset (its georeferencing), or null.
   GDALDataset* source_dataset() const { return source_.GetDataset(); }
+  // Whether the target is the source itself (a fill in place).
+  bool in_place() const { return in_place_; }
 
   // Whether the nodata value marks voids (besides NaN and masks).
   bool nodata_marks_voids() const;

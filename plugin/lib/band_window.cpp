@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <type_traits>
 
@@ -91,6 +92,18 @@ bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win
   return masked;
 }
 
+// GDAL's ARE_REAL_EQUAL, without its overflow: |a + b| is infinite for two
+// values near the end of the type's range, which made every such value
+// "equal" to a nodata there (-DBL_MAX, say). The same test where a + b is
+// finite; halved where it is not.
+template <class T>
+bool real_equal(T a, T b) {
+  constexpr T tolerance = std::numeric_limits<float>::epsilon() * 2;  // ARE_REAL_EQUAL's, ulp = 2
+  const T sum = a + b;
+  if (!std::isinf(sum)) return a == b || std::abs(a - b) < tolerance * std::abs(sum);
+  return std::abs(a - b) / 2 < tolerance * std::abs(a / 2 + b / 2);
+}
+
 // A float band whose own mask is its nodata value: GDAL's nodata mask band
 // compares each value to the nodata (as the band's type) with ARE_REAL_EQUAL,
 // and NaN to a NaN nodata. The same test here spares the mask band's second
@@ -102,7 +115,7 @@ void mark_float_nodata(const T* raw, std::size_t n, T nodata, std::uint8_t* vali
       if (std::isnan(raw[i])) valid[i] = 0;
   } else {
     for (std::size_t i = 0; i < n; ++i)
-      if (!std::isnan(raw[i]) && ARE_REAL_EQUAL(raw[i], nodata)) valid[i] = 0;
+      if (!std::isnan(raw[i]) && real_equal(raw[i], nodata)) valid[i] = 0;
   }
 }
 

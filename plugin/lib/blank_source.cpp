@@ -18,6 +18,11 @@ class BlankBand final : public GDALProxyRasterBand {
     eAccess = GA_ReadOnly;
   }
 
+  // GDAL 3.6's proxy forwards GetNoDataValue only: a copy of a 64-bit
+  // integer band lost its nodata value.
+  int64_t GetNoDataValueAsInt64(int* ok) override { return source_.GetNoDataValueAsInt64(ok); }
+  uint64_t GetNoDataValueAsUInt64(int* ok) override { return source_.GetNoDataValueAsUInt64(ok); }
+
  protected:
   GDALRasterBand* RefUnderlyingRasterBand() const override { return &source_; }
 

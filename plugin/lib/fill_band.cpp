@@ -54,6 +54,14 @@ std::vector<Line> lines_of(const Options& options, GDALDataset* source) {
   return lines;
 }
 
+// A fill in place that stopped after the tiles had written some of its
+// cells (the tiled path writes as it goes): said, with how much.
+[[noreturn]] void fail_partly_filled(const FillRequest& r, const RasterFillStats& stats, const std::string& why) {
+  throw Failure(why == "cancelled by the user" ? CPLE_UserInterrupt : CPLE_AppDefined,
+                why + "; " + band_name(r) + " is partly filled in place (" + std::to_string(stats.cells_written) +
+                    " of " + std::to_string(stats.void_cells) + " void cells written; known cells unchanged)");
+}
+
 }  // namespace
 
 GDALRasterBand* own_mask(GDALRasterBand& band) {
@@ -97,6 +105,12 @@ void fill_band_access(BandAccess& band, const FillRequest& request, const Option
   } catch (const std::invalid_argument&) {
     // Checked after the first pass, before anything is written.
     if (stats.void_cells > 0 && stats.known_cells == 0) fail_no_valid(request);
+    throw;
+  } catch (const Cancelled&) {
+    if (band.in_place() && stats.cells_written > 0) fail_partly_filled(request, stats, "cancelled by the user");
+    throw;
+  } catch (const std::exception& e) {
+    if (band.in_place() && stats.cells_written > 0) fail_partly_filled(request, stats, e.what());
     throw;
   }
   if (stats.channels_skipped)

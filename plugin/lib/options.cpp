@@ -1,5 +1,6 @@
 #include "lib/options.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -22,7 +23,33 @@ std::string upper(std::string s) {
   throw OptionError(name + "=" + value + " is invalid: expected " + want);
 }
 
+// A decimal number as people write one: [+-]digits[.digits][e[+-]digits]
+// (either side of the point may be empty, not both). strtod alone also took
+// hexadecimal (0x10), inf, nan and leading blanks.
+bool is_decimal(const std::string& v) {
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < v.size() && std::isdigit(static_cast<unsigned char>(v[i]))) ++i;
+    return i - from;
+  };
+  if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
+  std::size_t mantissa = digits();
+  if (i < v.size() && v[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0) return false;
+  if (i < v.size() && (v[i] == 'e' || v[i] == 'E')) {
+    ++i;
+    if (i < v.size() && (v[i] == '+' || v[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == v.size();
+}
+
 double number(const std::string& name, const std::string& value) {
+  if (!is_decimal(value)) fail(name, value, "a decimal number");
   const char* s = value.c_str();
   char* end = nullptr;
   errno = 0;

@@ -28,9 +28,16 @@ T nudge_int(T nodata, double v) {
   return static_cast<T>(nodata - 1);
 }
 
+// A filled value is a number: NaN would be cast to an integer (undefined)
+// or written as a void.
+[[noreturn]] void fail_not_a_number() {
+  throw Failure(CPLE_AppDefined, "the fill produced a NaN for a void cell (an internal error, please report it)");
+}
+
 template <class T>
 void encode_int(const double* v, std::size_t n, T* out, bool has_nodata, T nodata) {
   for (std::size_t i = 0; i < n; ++i) {
+    if (std::isnan(v[i])) fail_not_a_number();
     T x = clamp_to<T>(std::round(v[i]));
     if (has_nodata && x == nodata) x = nudge_int<T>(nodata, v[i]);
     out[i] = x;
@@ -42,10 +49,12 @@ void encode_float(const double* v, std::size_t n, T* out, bool has_nodata, doubl
   const bool check = has_nodata && !std::isnan(nodata);
   const T nd = static_cast<T>(nodata);
   for (std::size_t i = 0; i < n; ++i) {
-    T x = clamp_to<T>(v[i]);
+    if (std::isnan(v[i])) fail_not_a_number();
+    T x = clamp_to<T>(v[i]);  // ±inf: the largest finite value
     if (check && x == nd) {
-      const T towards = v[i] >= nodata ? std::numeric_limits<T>::max() : std::numeric_limits<T>::lowest();
-      x = std::nextafter(x, towards);
+      // One step towards v, or inwards from a nodata at the end of the range.
+      const bool up = nd == std::numeric_limits<T>::lowest() || (nd != std::numeric_limits<T>::max() && v[i] >= nodata);
+      x = std::nextafter(x, up ? std::numeric_limits<T>::max() : std::numeric_limits<T>::lowest());
     }
     out[i] = x;
   }

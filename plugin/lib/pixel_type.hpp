@@ -36,8 +36,10 @@ bool nodata_as(const PixelType& t, T& out) {
 }
 
 // Convert `count` doubles to the native type into `out` (count · bytes_per_pixel).
-// Integers are rounded half away from zero and clamped; any value that would
-// equal the nodata value is nudged by one unit towards the double value.
+// Integers are rounded half away from zero and clamped; floats are clamped
+// to the type's finite range; any value that would equal the nodata value is
+// nudged by one unit towards the double value (inwards at the range's end).
+// Throws Failure for a NaN value.
 void encode(const PixelType& type, const double* values, std::size_t count, void* out);
 
 }  // namespace mcmd::gdal

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "common/distance.hpp"
 #include "cpl_string.h"
@@ -88,6 +90,43 @@ TEST(Api, CancelledProgressFailsWithUserInterruptAndWritesNothing) {
   EXPECT_EQ(CPLGetLastErrorNo(), CPLE_UserInterrupt);
   EXPECT_GT(calls, 0);
   EXPECT_EQ(values(ds), before);
+  GDALClose(ds);
+}
+
+int CPL_STDCALL refuse_past_60_percent(double f, const char*, void*) { return f <= 0.6; }
+
+// The tiled path writes as it goes: a cancel after the first writes leaves
+// the band partly filled, and the message says so (known cells unchanged).
+TEST(Api, CancelAfterTilesWroteSaysPartlyFilled) {
+  GDALAllRegister();
+  constexpr int n = 200;
+  GDALDatasetH ds = GDALCreate(GDALGetDriverByName("MEM"), "", n, n, 1, GDT_Float32, nullptr);
+  GDALRasterBandH b = GDALGetRasterBand(ds, 1);
+  GDALSetRasterNoDataValue(b, -9999);
+  std::vector<float> z(n * n);
+  for (int i = 0; i < n * n; ++i) z[i] = (i % 7 == 0 && (i / n) % 5 == 0) ? -9999.0f : 100.0f + (i % n) + (i / n);
+  ASSERT_EQ(GDALRasterIO(b, GF_Write, 0, 0, n, n, z.data(), n, n, GDT_Float32, 0, 0), CE_None);
+  const char* opts[] = {"TILING=ALWAYS", "TILE_SIZE=33", "NUM_THREADS=1", "MAX_DISTANCE=50", nullptr};
+  CPLPushErrorHandler(CPLQuietErrorHandler);
+  CPLErrorReset();
+  const CPLErr err = MCMDFillNodata(b, nullptr, opts, refuse_past_60_percent, nullptr);
+  CPLPopErrorHandler();
+  EXPECT_EQ(err, CE_Failure);
+  EXPECT_EQ(CPLGetLastErrorNo(), CPLE_UserInterrupt);
+  EXPECT_NE(std::string(CPLGetLastErrorMsg()).find("partly filled in place"), std::string::npos)
+      << CPLGetLastErrorMsg();
+  std::vector<float> after(n * n);
+  ASSERT_EQ(GDALRasterIO(b, GF_Read, 0, 0, n, n, after.data(), n, n, GDT_Float32, 0, 0), CE_None);
+  std::size_t filled = 0, left = 0;
+  for (int i = 0; i < n * n; ++i) {
+    if (z[i] != -9999.0f) {
+      ASSERT_EQ(after[i], z[i]);
+      continue;
+    }
+    (after[i] == -9999.0f ? left : filled) += 1;
+  }
+  EXPECT_GT(filled, 0u);
+  EXPECT_GT(left, 0u);
   GDALClose(ds);
 }
 

@@ -28,11 +28,7 @@ class CliTypes : public ::testing::TestWithParam<TypeCase> {};
 TEST_P(CliTypes, ValidCellsBitExactAndEveryVoidFilled) {
   const TypeCase& c = GetParam();
   TempDir dir;
-  RasterSpec spec;
-  spec.type = c.type;
-  spec.nodata = c.nodata;
-  spec.base = c.base;
-  spec.scale = c.scale;
+  RasterSpec spec = spec_of(c.type, c.nodata, c.base, c.scale);
   spec.signed_byte = c.signed_byte;
   spec.nan_voids = c.nan_voids;
   const std::string src = dir.file("src.tif"), dst = dir.file("dst.tif");

@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <limits>
 #include <spawn.h>
 #include <sstream>
@@ -52,9 +53,33 @@ void copy_file(const std::string& from, const std::string& to) {
   fs::copy_file(from, to, fs::copy_options::overwrite_existing);
 }
 
-RunResult run_cli(const std::vector<std::string>& args, const std::string& shell_prefix) {
+namespace {
+
+RunningCli start(std::vector<std::string> argv, const TempDir& io) {
+  RunningCli c;
+  c.out = io.file("stdout");
+  c.err = io.file("stderr");
+  std::vector<char*> cargv;
+  for (auto& a : argv) cargv.push_back(a.data());
+  cargv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, c.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, c.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int rc = posix_spawn(&c.pid, cargv[0], &actions, nullptr, cargv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) throw std::runtime_error("cannot start " + argv[0]);
+  return c;
+}
+
+RunResult spawn(std::vector<std::string> argv) {
   TempDir io;
-  const std::string out = io.file("stdout"), err = io.file("stderr");
+  return finish_cli(start(std::move(argv), io));
+}
+
+}  // namespace
+
+RunResult run_cli(const std::vector<std::string>& args, const std::string& shell_prefix) {
   std::vector<std::string> argv;
   if (!shell_prefix.empty()) {
     argv = {"/bin/sh", "-c", shell_prefix + " exec \"$0\" \"$@\"", MCMD_FILLNODATA_EXE};
@@ -62,24 +87,44 @@ RunResult run_cli(const std::vector<std::string>& args, const std::string& shell
     argv = {MCMD_FILLNODATA_EXE};
   }
   argv.insert(argv.end(), args.begin(), args.end());
-  std::vector<char*> cargv;
-  for (auto& a : argv) cargv.push_back(a.data());
-  cargv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, cargv[0], &actions, nullptr, cargv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) throw std::runtime_error("cannot start " + argv[0]);
+  return spawn(std::move(argv));
+}
+
+RunningCli start_cli(const std::vector<std::string>& args, const TempDir& io) {
+  std::vector<std::string> argv = {MCMD_FILLNODATA_EXE};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return start(std::move(argv), io);
+}
+
+RunResult finish_cli(const RunningCli& c) {
   int status = 0;
-  ::waitpid(pid, &status, 0);
+  ::waitpid(c.pid, &status, 0);
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = file_bytes(out);
-  r.err = file_bytes(err);
+  r.out = file_bytes(c.out);
+  r.err = file_bytes(c.err);
   return r;
+}
+
+RunResult run_cli_under(const std::vector<std::string>& wrapper, const std::vector<std::string>& args) {
+  std::vector<std::string> argv = wrapper;
+  argv.push_back(MCMD_FILLNODATA_EXE);
+  argv.insert(argv.end(), args.begin(), args.end());
+  return spawn(std::move(argv));
+}
+
+void expect_clean_failure(const RunResult& r, const std::string& expect, const TempDir& dir,
+                          const std::vector<std::string>& listing, const std::string& src,
+                          const std::string& src_bytes) {
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_EQ(r.err.rfind("mcmd_fillnodata: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(expect), std::string::npos) << "expected '" << expect << "' in: " << r.err;
+  EXPECT_EQ(r.out.find("100 - done"), std::string::npos);
+  EXPECT_EQ(dir.listing(), listing) << "a file was left behind (or removed)";
+  if (file_exists(src)) {
+    EXPECT_EQ(file_bytes(src), src_bytes) << "source modified";
+  }
 }
 
 int line_count(const std::string& s) {
@@ -87,6 +132,15 @@ int line_count(const std::string& s) {
   for (std::size_t i = 0; i < s.size(); ++i)
     if (s[i] == '\n' || i + 1 == s.size()) ++n;
   return n;
+}
+
+RasterSpec spec_of(GDALDataType type, std::optional<double> nodata, double base, double scale) {
+  RasterSpec spec;
+  spec.type = type;
+  spec.nodata = nodata;
+  spec.base = base;
+  spec.scale = scale;
+  return spec;
 }
 
 bool is_test_void(int x, int y, int w, int h) {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <sys/types.h>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,28 @@ struct RunResult {
 // Run mcmd_fillnodata with `args` (and optionally through /bin/sh with
 // `shell_prefix`, e.g. "ulimit -f 20;").
 RunResult run_cli(const std::vector<std::string>& args, const std::string& shell_prefix = "");
+// Run mcmd_fillnodata with `args` through `wrapper`, a program (absolute
+// path) and its arguments that runs the rest (e.g. setpriv, as another user).
+RunResult run_cli_under(const std::vector<std::string>& wrapper, const std::vector<std::string>& args);
+
+// mcmd_fillnodata started in the background, its stdout and stderr going to
+// files of `io` (which must outlive it); finish_cli waits for it.
+struct RunningCli {
+  pid_t pid = -1;
+  std::string out, err;
+};
+RunningCli start_cli(const std::vector<std::string>& args, const TempDir& io);
+RunResult finish_cli(const RunningCli& running);
 
 // Number of lines in s (a trailing newline does not start a line).
 int line_count(const std::string& s);
+
+// What a failed run must leave (gtest expectations): a non-zero exit, one
+// "mcmd_fillnodata: error: ..." line holding `expect`, no "done", `dir` as
+// it was (`listing`), and the bytes of `src` (`src_bytes`, when it exists).
+void expect_clean_failure(const RunResult& r, const std::string& expect, const TempDir& dir,
+                          const std::vector<std::string>& listing, const std::string& src,
+                          const std::string& src_bytes);
 
 struct RasterSpec {
   GDALDataType type = GDT_Int16;
@@ -52,6 +72,9 @@ struct RasterSpec {
   double scale = 100.0;
   std::vector<std::string> creation_options;
 };
+
+// The standard spec with this type, nodata value and terrain range.
+RasterSpec spec_of(GDALDataType type, std::optional<double> nodata, double base, double scale);
 
 // Is (x, y) a void of the standard test pattern (a blob, a stripe, a border
 // notch and single cells)?

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "mcmd/fill_raster.hpp"
+#include "raster/frame.hpp"
 #include "raster/tiles/lone_void.hpp"
 #include "raster/tiles/tile_scan.hpp"
 
@@ -74,6 +75,7 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
   stats.known_cells = scan.known;
   if (scan.voids == 0) return false;
   if (scan.known == 0) throw std::invalid_argument("the raster has no known cell to fill from");
+  check_range(scan.lo, scan.hi);
 
   if (!raster.lines.empty()) plan.lines = morph::line_cells(raster);
   // One noise unit for every window, so displacement amplitudes agree across seams.
