@@ -345,7 +345,13 @@ void fill_whole_raster(const RasterAccess& raster, const FillParams& params, con
     sub.stats = &tiled;
     FillParams plain = params;
     plain.morph.channels = false;  // the tiles fill without channels
-    tiled_fill(in_memory_far(r, raster, far), plain, tiling, sub_progress(progress, 0.5, 1.0), sub);
+    if (hooks.stats) *hooks.stats = st;  // what is written so far, should the tiles stop
+    try {
+      tiled_fill(in_memory_far(r, raster, far), plain, tiling, sub_progress(progress, 0.5, 1.0), sub);
+    } catch (...) {
+      if (hooks.stats) hooks.stats->cells_written += tiled.cells_written;
+      throw;
+    }
     st.cells_written += tiled.cells_written;
     st.tile_side = tiled.tile_side, st.tiles_x = tiled.tiles_x, st.tiles_y = tiled.tiles_y;
     st.windows_solved = tiled.windows_solved, st.small_components = tiled.small_components;

@@ -1,6 +1,7 @@
 #include "lib/terrain_band.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -118,12 +119,26 @@ void write_canvas(GDALRasterBand& target, const Canvas& c, bool unknown_as_nodat
   const int bytes = GDALGetDataTypeSizeBytes(type.gdt);
   std::vector<double> row(static_cast<std::size_t>(c.w));
   std::vector<unsigned char> out(static_cast<std::size_t>(c.w) * bytes);
+  // The marker's bytes, written as they are: encode() refuses a NaN.
+  std::vector<unsigned char> marker_bytes(bytes);
+  if (unknown_as_nodata) {
+    if (type.gdt == GDT_Float32) {
+      const float f = static_cast<float>(marker);
+      std::memcpy(marker_bytes.data(), &f, sizeof f);
+    } else if (type.gdt == GDT_Float64) {
+      std::memcpy(marker_bytes.data(), &marker, sizeof marker);
+    } else {
+      encode(encoding, &marker, 1, marker_bytes.data());
+    }
+  }
   for (int y = 0; y < c.h; ++y) {
     for (int x = 0; x < c.w; ++x) {
       const std::size_t i = c.index(x, y);
-      row[x] = unknown_as_nodata && !is_constraint(c.state[i]) ? marker : c.z[i];
+      row[x] = unknown_as_nodata && !is_constraint(c.state[i]) ? 0.0 : c.z[i];
     }
     encode(encoding, row.data(), row.size(), out.data());
+    for (int x = 0; x < c.w && unknown_as_nodata; ++x)
+      if (!is_constraint(c.state[c.index(x, y)])) std::memcpy(out.data() + static_cast<std::size_t>(x) * bytes, marker_bytes.data(), bytes);
     check_io(target.RasterIO(GF_Write, 0, y, c.w, 1, out.data(), c.w, 1, type.gdt, 0, 0, nullptr),
              "cannot write the terrain");
   }

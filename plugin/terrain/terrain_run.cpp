@@ -8,6 +8,8 @@
 
 #include "cli/args.hpp"
 #include "cli/dataset.hpp"
+#include "cli/destination.hpp"
+#include "cli/output_driver.hpp"
 #include "cli/output_file.hpp"
 #include "cpl_string.h"
 #include "cpl_vsi.h"
@@ -100,18 +102,6 @@ Layout layout_of(const TerrainArgs& a, DatasetPtr& sketch, DatasetPtr& like) {
   return l;
 }
 
-GDALDriver* output_driver(const TerrainArgs& a) {
-  std::string name = a.format;
-  if (name.empty()) {
-    const std::string ext = CPLGetExtension(a.dst.c_str());
-    name = EQUAL(ext.c_str(), "png") ? "PNG" : EQUAL(ext.c_str(), "asc") ? "AAIGrid" : "GTiff";
-  }
-  GDALDriver* d = GetGDALDriverManager()->GetDriverByName(name.c_str());
-  if (!d) throw Failure(CPLE_IllegalArg, "unknown output format '" + name + "'");
-  if (!d->GetMetadataItem(GDAL_DCAP_CREATECOPY) && !d->GetMetadataItem(GDAL_DCAP_CREATE))
-    throw Failure(CPLE_IllegalArg, "the " + name + " driver cannot write files");
-  return d;
-}
 
 DatasetPtr memory_raster(const TerrainArgs& a, const Layout& l) {
   GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
@@ -142,14 +132,18 @@ void interrupt_terrain() { g_interrupted = 1; }
 void run_terrain(const TerrainArgs& a, ErrorLog& log, GDALProgressFunc progress) {
   DatasetPtr sketch, like;
   const Layout l = layout_of(a, sketch, like);
-  GDALDriver* driver = output_driver(a);
+  GDALDriver* driver = output_driver(a.format, a.dst);
   CPLStringList co;
   for (const std::string& c : a.creation_options) co.AddString(c.c_str());
-  TempOutput out(a.dst, driver);
-  std::unique_ptr<TempOutput> shade;
-  if (!a.hillshade.empty()) shade = std::make_unique<TempOutput>(a.hillshade, png_driver());
-
+  check_destination(a.dst);
+  if (!a.hillshade.empty()) check_destination(a.hillshade);
   DatasetPtr terrain = memory_raster(a, l);
+  check_output_driver(driver, co, *terrain);  // the sketch's cells are kept exactly
+  remove_stale_temporaries(a.dst);
+  TempOutput out(a.dst);
+  std::unique_ptr<TempOutput> shade;
+  if (!a.hillshade.empty()) remove_stale_temporaries(a.hillshade), shade = std::make_unique<TempOutput>(a.hillshade);
+
   gdal::make_terrain(*terrain->GetRasterBand(1), l.sketch, a.terrain, progress_part(progress, 0.0, 0.85));
   log.reset();
   write_copy(driver, out.path(), *terrain, co, log, progress_part(progress, 0.85, shade ? 0.95 : 1.0), a.dst);
