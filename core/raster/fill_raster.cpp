@@ -11,6 +11,7 @@
 #include "raster/frame.hpp"
 #include "raster/tiles/tile_layout.hpp"
 #include "raster/tiles/tiled_fill.hpp"
+#include "raster/void_selection.hpp"
 #include "raster/whole_raster.hpp"
 
 namespace mcmd {
@@ -51,9 +52,9 @@ void check_inputs(const RasterAccess& raster, const TilingParams& tiling) {
 namespace {
 
 void fill_by_path(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
-                  const ProgressFn& progress, const RasterFillHooks& hooks) {
+                  const ProgressFn& progress, const RasterFillHooks& hooks, const detail::LeftVoids& left) {
   if (fills_whole(raster.width, raster.height, params, tiling))
-    detail::fill_whole_raster(raster, params, tiling, progress, hooks);
+    detail::fill_whole_raster(raster, params, tiling, progress, hooks, left);
   else
     detail::tiled_fill(raster, params, tiling, progress, hooks);
 }
@@ -63,11 +64,15 @@ void fill_by_path(const RasterAccess& raster, const FillParams& params, const Ti
 void fill_raster(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
                  const ProgressFn& progress, const RasterFillHooks& hooks) {
   check_inputs(raster, tiling);
+  // The voids to leave unfilled are judged whole, before any tile is filled.
+  const detail::LeftVoids left =
+      detail::selects_voids(tiling) ? detail::find_left_voids(raster, tiling) : detail::LeftVoids{};
+  const RasterAccess selected = left.empty() ? raster : detail::without_left_voids(raster, left);
   try {
-    fill_by_path(raster, params, tiling, progress, hooks);
+    fill_by_path(selected, params, tiling, progress, hooks, left);
   } catch (const detail::ExtremeRange& e) {  // nothing written yet: again, in a frame (raster/frame.hpp)
     const detail::Frame frame = detail::frame_for(e.lo, e.hi);
-    fill_by_path(detail::framed(raster, frame), detail::framed(params, frame), tiling, progress, hooks);
+    fill_by_path(detail::framed(selected, frame), detail::framed(params, frame), tiling, progress, hooks, left);
   }
 }
 

@@ -43,12 +43,20 @@ struct Domain {
 
 using DomainResult = VoidFieldResult;
 
-std::vector<Domain> find_domains(const Whole& r) {
+std::size_t cell_count(const std::vector<VoidRun>& runs) {
+  std::size_t n = 0;
+  for (const VoidRun& run : runs) n += static_cast<std::size_t>(run.x1 - run.x0);
+  return n;
+}
+
+// The void components to solve: those with a cell that is not `left`.
+std::vector<Domain> find_domains(const Whole& r, const LeftVoids& left) {
   ComponentFinder finder(r.w, std::max(r.w, r.h), std::size_t{1} << 40);
   for (int y = 0; y < r.h; ++y) finder.add_row(y, r.valid.data() + r.index(0, y));
   finder.finish();
   std::vector<Domain> out;
   for (SmallComponent& c : finder.small()) {
+    if (!left.empty() && left.count(c.runs) == cell_count(c.runs)) continue;
     out.push_back(Domain{c.box, void_field_rect(c.box, r.w, r.h), std::move(c.runs)});
   }
   return out;
@@ -273,7 +281,7 @@ std::size_t gather(const Whole& r, const std::vector<Domain>& domains, const std
 }  // namespace
 
 void fill_whole_raster(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
-                       const ProgressFn& progress, const RasterFillHooks& hooks) {
+                       const ProgressFn& progress, const RasterFillHooks& hooks, const LeftVoids& left) {
   Whole r;
   r.w = raster.width;
   r.h = raster.height;
@@ -307,7 +315,7 @@ void fill_whole_raster(const RasterAccess& raster, const FillParams& params, con
   FillParams p = params;
   if (p.noise_unit <= 0) p.noise_unit = hi - lo;
   if (!raster.lines.empty()) r.lines = morph::line_cells(in_memory(r, raster));
-  const std::vector<Domain> domains = find_domains(r);
+  const std::vector<Domain> domains = find_domains(r, left);
   if (p.morph.channels) {
     if (p.morph.min_inflow <= 0) p.morph.min_inflow = default_channel_cells(st.known_cells);
     // The drainage into the voids, once for the whole raster when the

@@ -11,6 +11,7 @@
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
 #include "mcmd/raster_access.hpp"
+#include "raster/void_selection.hpp"
 
 namespace mcmd::detail {
 
@@ -27,9 +28,10 @@ constexpr int kMinGuideStride = 4;
 // measured exactly). A void with a cell so far from data that the coarse
 // guide's tension is needed (reaches_far) is left to the tiles
 // (tiles/tiled_fill.hpp), which fill it from the raster as read; the other
-// voids keep their own fields' fill.
+// voids keep their own fields' fill. A void component all of whose cells are
+// `left` (void_selection.hpp) is not solved.
 // Pre: fills_whole(width, height, params, tiling). Throws as fill_raster.
 void fill_whole_raster(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
-                       const ProgressFn& progress, const RasterFillHooks& hooks);
+                       const ProgressFn& progress, const RasterFillHooks& hooks, const LeftVoids& left);
 
 }  // namespace mcmd::detail

@@ -14,7 +14,8 @@ const std::map<std::string, std::string>& option_flags() {
   static const std::map<std::string, std::string> table = {
       {"-md", "MAX_DISTANCE"}, {"-method", "METHOD"}, {"-delta", "DELTA"}, {"-I", "I"},
       {"-Ibu", "I_BU"},        {"-H", "H"},           {"-rt", "RT"},       {"-rs", "RS"},
-      {"-seed", "SEED"},       {"-morph", "MORPH"},       {"-rivers", "RIVERS"},  {"-ridges", "RIDGES"},       {"-tile", "TILE_SIZE"}, {"-threads", "NUM_THREADS"},
+      {"-seed", "SEED"},       {"-morph", "MORPH"},       {"-rivers", "RIVERS"},  {"-ridges", "RIDGES"},
+      {"-maxvoid", "MAX_VOID"},       {"-tile", "TILE_SIZE"}, {"-threads", "NUM_THREADS"},
   };
   return table;
 }
@@ -58,6 +59,7 @@ bool handle_flag(Args& a, const std::string& flag, Reader& in) {
   else if (flag == "--version") a.version = true;
   else if (flag == "-q" || flag == "-quiet") a.quiet = true;
   else if (flag == "-nomask") a.nomask = true;
+  else if (flag == "-inner") a.fill_options.push_back("INNER_ONLY=YES");
   else if (flag == "-b") a.bands.push_back(band_number(in.value_of(flag)));
   else if (flag == "-mask") a.mask_file = in.value_of(flag);
   else if (flag == "-of") a.format = in.value_of(flag);

@@ -49,6 +49,15 @@ Shape of the fill (what it does to the terrain):
   -md distance     Maximum fill distance in cells: void cells farther than this
                    from any valid cell are left as nodata. 0 (default) = fill
                    every void, however large.
+  -inner           Fill only inner holes: voids that touch the raster's border
+                   (the sea, the outside of a survey footprint, scene edges)
+                   stay nodata. A void is a set of void cells connected through
+                   their 8 neighbours, judged whole however many tiles it
+                   crosses: mcmd_fillnodata -inner nz.tif nz_filled.tif.
+  -maxvoid size    Leave voids larger than this unfilled: a number of cells
+                   (-maxvoid 5000, -maxvoid 5000cells) or an area in m2, km2
+                   or ha (-maxvoid 2.5km2; geographic rasters: cell areas at
+                   their central latitude). Combines with -md and -inner.
   -I value         Shape of the top-down interpolation (paper's I, default 0):
                    0 blends the surrounding terrain evenly; I > 0 favours nearby
                    cells and gives rounded, bell-like fills; I < 0 favours distant

@@ -8,6 +8,7 @@
 #include "lib/band_window.hpp"
 #include "lib/errors.hpp"
 #include "lib/line_input.hpp"
+#include "lib/void_cap.hpp"
 #include "mcmd/fill_raster.hpp"
 
 namespace mcmd::gdal {
@@ -89,7 +90,8 @@ namespace {
 
 void fill_band_access(BandAccess& band, const FillRequest& request, const Options& options,
                       const ProgressFn& progress) {
-  const TilingParams tiling = tiling_of(options);
+  TilingParams tiling = tiling_of(options);
+  tiling.max_void_cells = void_cap_cells(options, band.source_dataset());
   RasterAccess access = band.access();
   access.lines = lines_of(options, band.source_dataset());
   RasterFillStats stats;

@@ -114,6 +114,39 @@ void set_roughness(FillParams& f, const std::string& name, const std::string& va
   f.noise_unit = 0.0;
 }
 
+bool yes_no(const std::string& name, const std::string& value) {
+  const std::string v = upper(value);
+  if (v == "YES" || v == "TRUE" || v == "ON" || v == "1") return true;
+  if (v == "NO" || v == "FALSE" || v == "OFF" || v == "0") return false;
+  fail(name, value, "YES or NO");
+}
+
+// MAX_VOID: a number of cells ("5000", "5000cells") or an area with its unit
+// ("40000m2", "2.5km2", "4ha").
+void set_max_void(Options& o, const std::string& name, const std::string& value) {
+  static const struct {
+    const char* suffix;
+    double m2;  // 0: cells
+  } units[] = {{"CELLS", 0.0}, {"KM2", 1e6}, {"HA", 1e4}, {"M2", 1.0}};
+  const std::string v = upper(value);
+  std::string digits = value;
+  double scale = 0.0;
+  for (const auto& u : units) {
+    const std::string s = u.suffix;
+    if (v.size() > s.size() && v.compare(v.size() - s.size(), s.size(), s) == 0) {
+      digits = value.substr(0, v.size() - s.size());
+      scale = u.m2;
+      break;
+    }
+  }
+  const char* want = "a whole number of cells (5000, 5000cells) or an area (40000m2, 2.5km2, 4ha), >= 0";
+  if (!is_decimal(digits)) fail(name, value, want);
+  const double n = number(name, digits);
+  if (n < 0 || n > 1e18 || (scale == 0 && n != std::floor(n))) fail(name, value, want);
+  o.max_void_in_m2 = scale > 0 && n > 0;
+  o.max_void = scale > 0 ? n * scale : n;
+}
+
 std::string path_of(const std::string& name, const std::string& value) {
   if (value.empty()) fail(name, value, "a file name");
   return value;
@@ -153,6 +186,8 @@ const std::map<std::string, Setter>& setters() {
       {"MORPH_CHANNEL", [](Options& o, auto& n, auto& v) { o.fill.morph.min_inflow = number_in(n, v, 1.0, 1e15); }},
       {"RIVERS", [](Options& o, auto& n, auto& v) { o.rivers = path_of(n, v); }},
       {"RIDGES", [](Options& o, auto& n, auto& v) { o.ridges = path_of(n, v); }},
+      {"INNER_ONLY", [](Options& o, auto& n, auto& v) { o.inner_only = yes_no(n, v); }},
+      {"MAX_VOID", set_max_void},
       {"MAX_DISTANCE",
        [](Options& o, auto& n, auto& v) { o.max_distance = number_in(n, v, 0.0, 1e12); }},
       {"TILE_SIZE",
@@ -185,7 +220,7 @@ const std::map<std::string, Setter>& setters() {
 
 const char* option_names() {
   return "METHOD, DELTA, I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT, RS, SEED, MORPH, "
-         "MORPH_CHANNEL, RIVERS, RIDGES, MAX_DISTANCE, TILE_SIZE, TILING, NUM_THREADS";
+         "MORPH_CHANNEL, RIVERS, RIDGES, MAX_DISTANCE, INNER_ONLY, MAX_VOID, TILE_SIZE, TILING, NUM_THREADS";
 }
 
 TilingParams tiling_of(const Options& o) {
@@ -194,6 +229,8 @@ TilingParams tiling_of(const Options& o) {
   t.always_tile = o.always_tile;
   t.threads = o.num_threads;
   t.max_distance = o.max_distance;
+  t.inner_only = o.inner_only;
+  t.max_void_cells = o.max_void_in_m2 ? 0 : static_cast<std::size_t>(o.max_void);
   return t;
 }
 

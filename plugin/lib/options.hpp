@@ -24,6 +24,11 @@ struct Options {
   int num_threads = 0;        // 0 = all CPUs
   std::string rivers;         // RIVERS=: a file of river lines (lib/line_input.hpp); "" = none
   std::string ridges;         // RIDGES=: likewise, ridge lines
+  bool inner_only = false;    // INNER_ONLY=YES: leave the voids touching the border
+  // MAX_VOID=: leave the voids larger than this, in cells or (max_void_in_m2)
+  // in square metres; 0 = no cap. void_cap_cells() turns it into cells.
+  double max_void = 0.0;
+  bool max_void_in_m2 = false;
 };
 
 // The raster engine's tiling parameters of `o`.

@@ -15,7 +15,9 @@ Two functions, the same fill as the command-line tool ``mcmd_fillnodata``
 Options are the library's NAME=VALUE options, given as keyword arguments in
 any case (``rs="auto"``, ``method="paper-ds"``, ``tiling="ALWAYS"``,
 ``tile_size=257``, ``I=0.3``): METHOD, DELTA, I, I_BU, RIDGE_I, RIDGE_I_BU,
-RIVER_I, RIVER_I_BU, H, RT, RS, SEED, MAX_DISTANCE, TILE_SIZE, TILING,
+RIVER_I, RIVER_I_BU, H, RT, RS, SEED, MAX_DISTANCE, INNER_ONLY
+(``inner_only=True``: leave the voids touching the border), MAX_VOID
+(``max_void=5000``: leave voids of more cells), TILE_SIZE, TILING,
 NUM_THREADS (``threads=``). They are checked by the same parser as the CLI's
 options: a bad value raises ValueError with the CLI's message.
 

@@ -76,6 +76,13 @@ triangle-edge</b> are the published algorithm exactly; they are less accurate an
 hillshades show a lattice of dimples (diamond-square) or straight creases (triangle-edge).</dd>
 <dt>Maximum distance</dt><dd>Cells farther than this many pixels from a known cell stay nodata;
 0 fills every void whatever its size.</dd>
+<dt>Fill only inner holes</dt><dd>Leave the voids that touch the raster's border as nodata:
+the sea around a coast, the outside of a survey footprint, scene edges (<code>-inner</code>). A
+void is a set of nodata cells connected through their 8 neighbours, judged whole however large.</dd>
+<dt>Leave voids larger than</dt><dd>Voids of more cells than this stay nodata
+(<code>-maxvoid</code>): a number of cells (<code>5000</code>) or an area in m2, km2 or ha
+(<code>2.5km2</code>, <code>40ha</code>; cell areas of geographic rasters at their central
+latitude). 0 fills voids of any size.</dd>
 <dt>I (top-down shape)</dt><dd>Shapes the distance weighting Δ used when a void cell is
 interpolated from its ancestors. 0 blends the surrounding terrain evenly; I &gt; 0 favours nearby
 cells and gives rounded, bell-like fills; I &lt; 0 favours distant cells and gives sharper,
@@ -128,6 +135,8 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
     METHOD = 'METHOD'
     DELTA = 'DELTA'
     RS = 'RS'
+    INNER_ONLY = 'INNER_ONLY'
+    MAX_VOID = 'MAX_VOID'
     CREATION_OPTIONS = 'CREATION_OPTIONS'
     EXTRA = 'EXTRA'
     OUTPUT = 'OUTPUT'
@@ -209,6 +218,12 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
                 # RS right after the distance: the two options users change most.
                 self.addParameter(QgsProcessingParameterString(
                     self.RS, self.tr('Displacement scale RS (0 = smooth, a number, or "auto")'),
+                    defaultValue='0'))
+                self.addParameter(QgsProcessingParameterBoolean(
+                    self.INNER_ONLY, self.tr('Fill only inner holes (leave voids touching the border)'),
+                    defaultValue=False))
+                self.addParameter(QgsProcessingParameterString(
+                    self.MAX_VOID, self.tr('Leave voids larger than (cells, or an area: 2.5km2, 40ha; 0 = no cap)'),
                     defaultValue='0'))
         options = QgsProcessingParameterString(
             self.CREATION_OPTIONS, self.tr('Creation options'), defaultValue='', optional=True)
@@ -312,6 +327,11 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
                     raise QgsProcessingException(self.tr('RS must be "auto" or a number >= 0'))
                 if rs == 'auto' or float(rs) != 0.0:
                     args += ['-rs', rs]
+                if self.parameterAsBoolean(parameters, self.INNER_ONLY, context):
+                    args.append('-inner')
+                max_void = (self.parameterAsString(parameters, self.MAX_VOID, context) or '').strip()
+                if max_void not in ('', '0'):
+                    args += ['-maxvoid', max_void]  # the tool checks it and says what is wrong
 
         output = self.parameterAsOutputLayer(parameters, self.OUTPUT, context)
         if not output:

@@ -18,6 +18,7 @@
 #include "raster/coarse_guide.hpp"
 #include "raster/tiles/tile_layout.hpp"
 #include "raster/tiles/tile_window.hpp"
+#include "raster/void_selection.hpp"
 #include "test_terrain.hpp"
 #include "thin_plate/thin_plate.hpp"
 
@@ -700,4 +701,114 @@ TEST(TiledFill, TilesWhenAskedForPaperOrFarReachingVoids) {
   run(r, 0, 2, hooks);
   EXPECT_GT(stats.tile_side, 0);
   EXPECT_TRUE(r.complete());
+}
+
+// -inner and -maxvoid (raster/void_selection.hpp).
+namespace {
+
+// Voids of exactly n cells: an L of cells in one row then down one column,
+// placed at (x, y).
+void punch_cells(MemRaster& r, int x, int y, int n) {
+  for (int k = 0; k < n; ++k) {
+    const int along = std::min(k, 7);
+    r.valid[r.at(x + along, y + std::max(0, k - 7))] = 0;
+  }
+}
+
+std::size_t unwritten_voids(const MemRaster& r) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < r.valid.size(); ++i) n += !r.valid[i] && r.write_count[i] == 0;
+  return n;
+}
+
+TilingParams selecting(bool inner_only, std::size_t max_void_cells, int tile, int threads) {
+  TilingParams tp;
+  tp.inner_only = inner_only;
+  tp.max_void_cells = max_void_cells;
+  tp.tile_side = tile;
+  tp.always_tile = tile != 0;
+  tp.threads = threads;
+  return tp;
+}
+
+}  // namespace
+
+TEST(VoidSelection, EightNeighboursMakeOneVoidAndTheBorderIsSeen) {
+  // Row-major 6×4: a border void (left column), a diagonal pair (one void of
+  // 2 cells) and a single inner cell.
+  const std::vector<std::uint8_t> valid = {
+      0, 1, 1, 1, 1, 1,  //
+      0, 1, 0, 1, 1, 1,  //
+      1, 1, 1, 0, 1, 0,  //
+      1, 1, 1, 1, 1, 1,
+  };
+  const auto left_of = [&](bool inner, std::size_t cap) {
+    detail::VoidSelector s(6, 4, selecting(inner, cap, 0, 1));
+    for (int y = 0; y < 4; ++y) s.add_row(y, valid.data() + 6 * y);
+    return s.finish();
+  };
+  EXPECT_EQ(left_of(true, 0).cells(), 3u);  // the left column's 2 cells and (5, 2) on the right border
+  EXPECT_EQ(left_of(false, 1).cells(), 4u);  // the two 2-cell voids (the diagonal pair is one)
+  EXPECT_EQ(left_of(false, 2).cells(), 0u);
+  EXPECT_EQ(left_of(true, 1).cells(), 5u);
+}
+
+TEST(VoidSelection, InnerOnlyLeavesTheSeaAndFillsTheLake) {
+  MemRaster r = terrain_raster(230, 170);
+  for (int y = 0; y < r.h; ++y)  // a sea along the left border, wider than a tile
+    for (int x = 0; x < 40 + y / 4; ++x) r.valid[r.at(x, y)] = 0;
+  punch_disc(r, 160, 90, 12);  // an inner lake
+  for (int tile : {0, 33}) {
+    std::vector<double> first;
+    for (int threads : {1, 2}) {
+      fill_raster(r.access(), FillParams{}, selecting(true, 0, tile, threads));
+      EXPECT_EQ(r.known_writes, 0u);
+      for (int y = 0; y < r.h; ++y)
+        for (int x = 0; x < r.w; ++x) {
+          const std::size_t i = r.at(x, y);
+          if (r.valid[i]) continue;
+          const bool lake = std::hypot(x - 160, y - 90) <= 12;
+          ASSERT_EQ(r.write_count[i], lake ? 1 : 0) << "tile " << tile << " at " << x << "," << y;
+          ASSERT_EQ(std::isfinite(r.out[i]), lake);
+        }
+      if (first.empty()) first = r.out;
+      EXPECT_TRUE(bit_identical(first, r.out)) << "tile " << tile;
+      std::fill(r.write_count.begin(), r.write_count.end(), 0);
+    }
+  }
+}
+
+TEST(VoidSelection, InnerOnlyLakeIsFilledAsWithoutTheOption) {
+  // Raster held whole: the sea is not solved, the lake's field is its own.
+  MemRaster r = terrain_raster(200, 150);
+  for (int y = 0; y < r.h; ++y) r.valid[r.at(0, y)] = r.valid[r.at(1, y)] = 0;
+  punch_disc(r, 120, 70, 10);
+  const std::vector<double> plain = run(r, 0, 2);
+  fill_raster(r.access(), FillParams{}, selecting(true, 0, 0, 2));
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) {
+      if (std::hypot(x - 120, y - 70) > 10) continue;
+      ASSERT_EQ(plain[r.at(x, y)], r.out[r.at(x, y)]) << x << "," << y;
+    }
+}
+
+TEST(VoidSelection, CapAtTheThresholdAcrossATileSeam) {
+  // Voids of 39, 40 and 41 cells, each crossing the seam at x = 32 of 33-cell
+  // tiles (the L runs from x = 28 to 35 then down).
+  for (int tile : {0, 33}) {
+    std::vector<double> first;
+    for (int threads : {1, 2}) {
+      MemRaster r = terrain_raster(120, 150);
+      punch_cells(r, 28, 10, 39);
+      punch_cells(r, 28, 55, 40);
+      punch_cells(r, 28, 100, 41);
+      fill_raster(r.access(), FillParams{}, selecting(false, 40, tile, threads));
+      EXPECT_EQ(unwritten_voids(r), 41u) << "tile " << tile;
+      for (int y = 100; y < r.h; ++y) {
+        for (int x = 0; x < r.w; ++x) ASSERT_EQ(r.write_count[r.at(x, y)], 0) << x << "," << y;
+      }
+      if (first.empty()) first = r.out;
+      EXPECT_TRUE(bit_identical(first, r.out));
+    }
+  }
 }

@@ -120,3 +120,18 @@ def test_version_is_the_cli_s(cli):
     import subprocess
     out = subprocess.run([cli, "--version"], capture_output=True, text=True, check=True).stdout
     assert out.split()[1] == mcmd.__version__
+
+
+def test_inner_only_and_max_void_match_cli(tmp_path):
+    a = terrain()[0].astype(np.float32)
+    a[:, :6] = np.nan                # touches the border: left alone by inner_only
+    a[20:26, 30:36] = np.nan         # 36 cells
+    a[40:42, 10:12] = np.nan         # 4 cells
+    inner = mcmd.fill(a, inner_only=True)
+    assert np.isnan(inner[:, :6]).all() and not np.isnan(inner[:, 6:]).any()
+    assert same_bits(inner, cli_result(tmp_path, a, None, ["-inner"]))
+    capped = mcmd.fill(a, max_void=36)
+    assert np.isnan(capped[:, :6]).all() and not np.isnan(capped[:, 6:]).any()
+    assert np.isnan(mcmd.fill(a, max_void=35)[20:26, 30:36]).all()
+    with pytest.raises(ValueError, match="MAX_VOID=1.5"):
+        mcmd.fill(a, max_void=1.5)

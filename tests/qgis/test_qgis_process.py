@@ -99,3 +99,24 @@ def test_zip_and_install_scripts(tmp_path):
                    check=True, capture_output=True, env=env)
     assert (plugins / 'mcmd_provider' / 'metadata.txt').is_file()
     assert os.access(plugins / 'mcmd_provider' / 'bin' / 'mcmd_fillnodata', os.X_OK)
+
+
+def test_qgis_process_inner_only_and_void_cap(qp_env, cli, data, tmp_path):
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    help_text = qgis_process(qp_env, 'help', 'mcmd:fillnodata').stdout
+    assert 'INNER_ONLY' in help_text and 'MAX_VOID' in help_text
+    cases = [(['INNER_ONLY=true'], ['-inner']), (['MAX_VOID=20'], ['-maxvoid', '20'])]
+    for k, (params, flags) in enumerate(cases):
+        # Fresh copies: QGIS leaves statistics beside the layers it opened.
+        src = data('peaks_int16_geo.tif', f'in{k}')
+        out = str(tmp_path / 'qp.tif')
+        ref = str(tmp_path / 'cli.tif')
+        run_cli(cli, ['-q', *flags, data('peaks_int16_geo.tif', f'cli{k}'), ref])
+        qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={src}', *params, f'OUTPUT={out}')
+        assert_same_raster(out, ref)
+        _, _, [(before, nodata, _)] = read_bands(src)
+        _, _, [(after, _, _)] = read_bands(out)
+        # Some voids are left, others filled.
+        assert 0 < (after == nodata).sum() < (before == nodata).sum()
+        os.remove(out)
+        os.remove(ref)

@@ -34,6 +34,10 @@ struct TilingParams {
   // Tiles even where the raster is small enough to fill whole (docs/tiling.md,
   // "Small rasters"); tile_side alone does not ask for tiles.
   bool always_tile = false;
+  // Voids left unfilled (raster/void_selection.hpp): those touching the
+  // raster's border (-inner), those of more than max_void_cells cells (-maxvoid; 0 = no cap).
+  bool inner_only = false;
+  std::size_t max_void_cells = 0;
 };
 
 constexpr int kDefaultTileSide = 129;  // measured: see docs/tiling.md

@@ -1,0 +1,111 @@
+#include "raster/void_selection.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace mcmd::detail {
+
+LeftVoids::LeftVoids(std::vector<VoidRun> runs, int height) : runs_(std::move(runs)) {
+  row_start_.assign(static_cast<std::size_t>(height) + 1, 0);
+  for (const VoidRun& r : runs_) {
+    ++row_start_[static_cast<std::size_t>(r.y) + 1];
+    cells_ += static_cast<std::size_t>(r.x1 - r.x0);
+  }
+  for (std::size_t y = 0; y + 1 < row_start_.size(); ++y) row_start_[y + 1] += row_start_[y];
+}
+
+void LeftVoids::clear(int x0, int y0, int w, int h, std::uint8_t* mask) const {
+  if (runs_.empty()) return;
+  for (int y = y0; y < y0 + h; ++y)
+    for (std::size_t k = row_start_[y]; k < row_start_[y + 1]; ++k) {
+      const int b = std::max(runs_[k].x0, x0), e = std::min(runs_[k].x1, x0 + w);
+      if (b < e) std::fill(mask + static_cast<std::size_t>(y - y0) * w + (b - x0), mask + static_cast<std::size_t>(y - y0) * w + (e - x0), 0);
+    }
+}
+
+std::size_t LeftVoids::count(const std::vector<VoidRun>& runs) const {
+  std::size_t n = 0;
+  for (const VoidRun& r : runs)
+    for (std::size_t k = row_start_[r.y]; k < row_start_[r.y + 1]; ++k) {
+      const int b = std::max(runs_[k].x0, r.x0), e = std::min(runs_[k].x1, r.x1);
+      if (b < e) n += static_cast<std::size_t>(e - b);
+    }
+  return n;
+}
+
+VoidSelector::VoidSelector(int width, int height, const TilingParams& tiling)
+    : width_(width), height_(height), inner_only_(tiling.inner_only), max_cells_(tiling.max_void_cells) {}
+
+int VoidSelector::find(int i) {
+  int root = i;
+  while (parent_[root] != root) root = parent_[root];
+  while (parent_[i] != root) i = std::exchange(parent_[i], root);
+  return root;
+}
+
+void VoidSelector::unite(int a, int b) {
+  a = find(a), b = find(b);
+  if (a == b) return;
+  if (a > b) std::swap(a, b);  // the older run stays the root: labels do not depend on the union order
+  parent_[b] = a;
+  cells_[a] += cells_[b];
+  border_[a] = border_[a] || border_[b];
+}
+
+void VoidSelector::add_row(int y, const std::uint8_t* valid) {
+  const std::size_t begin = runs_.size();
+  std::size_t p = prev_begin_;
+  for (int x = 0; x < width_;) {
+    if (valid[x]) {
+      ++x;
+      continue;
+    }
+    const int x0 = x;
+    while (x < width_ && !valid[x]) ++x;
+    const int id = static_cast<int>(runs_.size());
+    runs_.push_back(VoidRun{y, x0, x});
+    parent_.push_back(id);
+    cells_.push_back(static_cast<std::size_t>(x - x0));
+    border_.push_back(y == 0 || y == height_ - 1 || x0 == 0 || x == width_);
+    // 8-neighbours: a run of the row above touching [x0 - 1, x] (inclusive).
+    while (p < prev_end_ && runs_[p].x1 < x0) ++p;
+    for (std::size_t q = p; q < prev_end_ && runs_[q].x0 <= x; ++q) unite(static_cast<int>(q), id);
+  }
+  prev_begin_ = begin;
+  prev_end_ = runs_.size();
+}
+
+LeftVoids VoidSelector::finish() {
+  std::vector<VoidRun> left;
+  for (std::size_t i = 0; i < runs_.size(); ++i) {
+    const int root = find(static_cast<int>(i));
+    const bool leave = (inner_only_ && border_[root]) || (max_cells_ > 0 && cells_[root] > max_cells_);
+    if (leave) left.push_back(runs_[i]);
+  }
+  return LeftVoids(std::move(left), height_);
+}
+
+LeftVoids find_left_voids(const RasterAccess& raster, const TilingParams& tiling) {
+  VoidSelector selector(raster.width, raster.height, tiling);
+  const int rows = std::clamp((1 << 20) / raster.width, 1, raster.height);  // strips of about a million cells
+  std::vector<double> z(static_cast<std::size_t>(raster.width) * rows);
+  std::vector<std::uint8_t> valid(z.size());
+  for (int y = 0; y < raster.height; y += rows) {
+    const int h = std::min(rows, raster.height - y);
+    raster.read(0, y, raster.width, h, z.data(), valid.data());
+    for (int r = 0; r < h; ++r) selector.add_row(y + r, valid.data() + static_cast<std::size_t>(r) * raster.width);
+  }
+  return selector.finish();
+}
+
+RasterAccess without_left_voids(const RasterAccess& raster, const LeftVoids& left) {
+  RasterAccess a = raster;
+  a.write = [&raster, &left](int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
+    std::vector<std::uint8_t> m(mask, mask + static_cast<std::size_t>(w) * h);
+    left.clear(x0, y0, w, h, m.data());
+    raster.write(x0, y0, w, h, z, m.data());
+  };
+  return a;
+}
+
+}  // namespace mcmd::detail
