@@ -37,12 +37,15 @@ DELTA_FORMS = [
     ('paper', 'Paper (pulls towards 0 when I != 0)'),
 ]
 
+# Names of earlier versions -> the names shared with QGIS's gdal:fillnodata.
+RENAMED = {'MAX_DISTANCE': 'DISTANCE', 'MASK': 'MASK_LAYER', 'CREATION_OPTIONS': 'OPTIONS'}
+
 # Numeric parameters: name, CLI flag, label, type, default (= the tool's default,
 # the flag is only passed when the value differs), min, max, advanced.
 _DOUBLE = QgsProcessingParameterNumber.Double
 _INT = QgsProcessingParameterNumber.Integer
 NUMBERS = [
-    ('MAX_DISTANCE', '-md', 'Maximum distance from known cells to fill, in pixels (0 = unlimited)',
+    ('DISTANCE', '-md', 'Maximum distance from known cells to fill, in pixels (0 = unlimited)',
      _DOUBLE, 0.0, 0.0, None, False),
     ('I', '-I', 'Top-down interpolation shape I', _DOUBLE, 0.0, -100.0, 100.0, True),
     ('I_BU', '-Ibu', 'Bottom-up interpolation shape I_bu', _DOUBLE, 0.0, -100.0, 100.0, True),
@@ -130,14 +133,14 @@ SHORT_HELP = ('Fills nodata voids of a raster (DEM) with Morphologically Constra
 class FillNodataAlgorithm(QgsProcessingAlgorithm):
     INPUT = 'INPUT'
     BANDS = 'BANDS'
-    MASK = 'MASK'
+    MASK = 'MASK_LAYER'
     NO_MASK = 'NO_MASK'
     METHOD = 'METHOD'
     DELTA = 'DELTA'
     RS = 'RS'
     INNER_ONLY = 'INNER_ONLY'
     MAX_VOID = 'MAX_VOID'
-    CREATION_OPTIONS = 'CREATION_OPTIONS'
+    CREATION_OPTIONS = 'OPTIONS'
     EXTRA = 'EXTRA'
     OUTPUT = 'OUTPUT'
 
@@ -207,6 +210,8 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
                 param.setMaximum(maximum)
             if advanced:
                 param.setFlags(param.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
+            if kind == _DOUBLE:
+                param.setMetadata({'widget_wrapper': {'decimals': 2}})
             self.addParameter(param)
             if name == 'I_BU':
                 delta = QgsProcessingParameterEnum(
@@ -214,7 +219,7 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
                     options=[self.tr(label) for _, label in DELTA_FORMS], defaultValue=0)
                 delta.setFlags(delta.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
                 self.addParameter(delta)
-            if name == 'MAX_DISTANCE':
+            if name == 'DISTANCE':
                 # RS right after the distance: the two options users change most.
                 self.addParameter(QgsProcessingParameterString(
                     self.RS, self.tr('Displacement scale RS (0 = smooth, a number, or "auto")'),
@@ -262,6 +267,14 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
         ok, message = super().checkParameterValues(parameters, context)
         if not ok:
             return ok, message
+        # qgis_process and scripts pass names QGIS would otherwise drop silently.
+        known = {p.name() for p in self.parameterDefinitions()}
+        for name in parameters:
+            if name not in known:
+                hint = RENAMED.get(name)
+                return False, (self.tr('Unknown parameter {} (use {}, as gdal:fillnodata)').format(name, hint)
+                               if hint else self.tr('Unknown parameter {} (known: {})').format(
+                                   name, ', '.join(sorted(known))))
         rs = self.parameterAsString(parameters, self.RS, context)
         if self.parse_rs(rs) is None:
             return False, self.tr('RS must be "auto" or a number >= 0, not "{}"').format(rs)
@@ -321,7 +334,7 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
                 delta = DELTA_FORMS[self.parameterAsEnum(parameters, self.DELTA, context)][0]
                 if delta != DELTA_FORMS[0][0]:
                     args += ['-delta', delta]
-            if name == 'MAX_DISTANCE':
+            if name == 'DISTANCE':
                 rs = self.parse_rs(self.parameterAsString(parameters, self.RS, context))
                 if rs is None:
                     raise QgsProcessingException(self.tr('RS must be "auto" or a number >= 0'))

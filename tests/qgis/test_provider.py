@@ -76,8 +76,8 @@ def test_provider_and_algorithm_registered(qgis_app):
     assert alg.displayName() == 'Fill nodata (MCMD)'
     assert alg.shortHelpString() and 'RS' in alg.helpString()
     names = [p.name() for p in alg.parameterDefinitions()]
-    for name in ['INPUT', 'BANDS', 'MASK', 'METHOD', 'I', 'I_BU', 'H', 'RT', 'RS', 'SEED',
-                 'MAX_DISTANCE', 'TILE_SIZE', 'THREADS', 'CREATION_OPTIONS', 'OUTPUT']:
+    for name in ['INPUT', 'BANDS', 'MASK_LAYER', 'METHOD', 'I', 'I_BU', 'H', 'RT', 'RS', 'SEED',
+                 'DISTANCE', 'INNER_ONLY', 'MAX_VOID', 'TILE_SIZE', 'THREADS', 'OPTIONS', 'OUTPUT']:
         assert name in names, name
     advanced = {p.name() for p in alg.parameterDefinitions()
                 if p.flags() & QgsProcessingParameterDefinition.FlagAdvanced}
@@ -106,7 +106,7 @@ def test_algorithm_dialog_builds(qgis_app):
     qgis_app.processEvents()
     wrappers = dialog.mainWidget().wrappers
     assert set(wrappers) == {p.name() for p in alg.parameterDefinitions()}
-    assert type(wrappers['CREATION_OPTIONS']).__name__ == 'RasterOptionsWidgetWrapper'
+    assert type(wrappers['OPTIONS']).__name__ == 'RasterOptionsWidgetWrapper'
     dialog.close()
 
 
@@ -143,8 +143,8 @@ def test_fills_int16_voids_like_the_cli(use_cli, data, tmp_path):
     ({'METHOD': 2, 'I': -0.4, 'I_BU': 6, 'H': 0.4, 'RT': -0.5, 'RS': '0.2', 'SEED': 7},
      ['-method', 'paper-te', '-I', '-0.4', '-Ibu', '6', '-H', '0.4', '-rt', '-0.5', '-rs', '0.2',
       '-seed', '7']),
-    ({'RS': 'auto', 'SEED': 3, 'MAX_DISTANCE': 5, 'TILE_SIZE': 65, 'THREADS': 2,
-      'CREATION_OPTIONS': 'COMPRESS=DEFLATE|TILED=YES'},
+    ({'RS': 'auto', 'SEED': 3, 'DISTANCE': 5, 'TILE_SIZE': 65, 'THREADS': 2,
+      'OPTIONS': 'COMPRESS=DEFLATE|TILED=YES'},
      ['-rs', 'auto', '-seed', '3', '-md', '5', '-tile', '65', '-threads', '2',
       '-co', 'COMPRESS=DEFLATE', '-co', 'TILED=YES']),
 ])
@@ -175,7 +175,7 @@ def test_band_selection_and_mask(use_cli, data, tmp_path):
     ref = str(tmp_path / 'cli_mask.tif')
     run_cli(use_cli, ['-q', '-mask', data('peaks_mask.tif', 'cli'),
                       data('peaks_nonodata.tif', 'cli'), ref])
-    run_alg({'INPUT': data('peaks_nonodata.tif'), 'MASK': data('peaks_mask.tif'),
+    run_alg({'INPUT': data('peaks_nonodata.tif'), 'MASK_LAYER': data('peaks_mask.tif'),
              'OUTPUT': out})
     assert_same_raster(out, ref)
     _, _, [(before, _, _)] = read_bands(data('peaks_nonodata.tif', 'cli'))

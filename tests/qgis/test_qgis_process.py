@@ -120,3 +120,19 @@ def test_qgis_process_inner_only_and_void_cap(qp_env, cli, data, tmp_path):
         assert 0 < (after == nodata).sum() < (before == nodata).sum()
         os.remove(out)
         os.remove(ref)
+
+
+def test_qgis_process_names_as_gdal_fillnodata_and_unknown_names_refused(qp_env, cli, data, tmp_path):
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    out = str(tmp_path / 'qp.tif')
+    ref = str(tmp_path / 'cli.tif')
+    run_cli(cli, ['-q', '-md', '2', data('peaks_int16_geo.tif', 'cli'), ref])
+    qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={data("peaks_int16_geo.tif")}', 'DISTANCE=2',
+                 f'OUTPUT={out}')
+    assert_same_raster(out, ref)
+    # A name QGIS does not know would run with its default: refused instead.
+    bad = qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={data("peaks_int16_geo.tif", "in2")}',
+                       'MAX_DISTANCE=2', f'OUTPUT={tmp_path / "bad.tif"}', check=False)
+    assert bad.returncode != 0
+    assert 'Unknown parameter MAX_DISTANCE (use DISTANCE' in bad.stdout + bad.stderr
+    assert not os.path.exists(tmp_path / 'bad.tif')
