@@ -15,7 +15,7 @@ const std::map<std::string, std::string>& option_flags() {
       {"-md", "MAX_DISTANCE"}, {"-method", "METHOD"}, {"-delta", "DELTA"}, {"-I", "I"},
       {"-Ibu", "I_BU"},        {"-H", "H"},           {"-rt", "RT"},       {"-rs", "RS"},
       {"-seed", "SEED"},       {"-morph", "MORPH"},       {"-rivers", "RIVERS"},  {"-ridges", "RIDGES"},
-      {"-maxvoid", "MAX_VOID"},       {"-tile", "TILE_SIZE"}, {"-threads", "NUM_THREADS"},
+      {"-maxvoid", "MAX_VOID"}, {"-fill-from", "FILL_FROM"},       {"-tile", "TILE_SIZE"}, {"-threads", "NUM_THREADS"},
   };
   return table;
 }

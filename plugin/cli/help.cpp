@@ -54,6 +54,13 @@ Shape of the fill (what it does to the terrain):
                    stay nodata. A void is a set of void cells connected through
                    their 8 neighbours, judged whole however many tiles it
                    crosses: mcmd_fillnodata -inner nz.tif nz_filled.tif.
+  -fill-from file  Delta surface fill: take the voids' shape from a second DEM
+                   of the area (any CRS, resolution and extent: warped onto
+                   this raster's grid, cubic; -o FILL_FROM_RESAMPLING=bilinear)
+                   and interpolate only the difference between the two DEMs,
+                   faded with the distance from the rim: no step at the rim.
+                   Voids it does not cover get the plain fill:
+                   mcmd_fillnodata -fill-from gtopo30.tif srtm.tif filled.tif.
   -maxvoid size    Leave voids larger than this unfilled: a number of cells
                    (-maxvoid 5000, -maxvoid 5000cells) or an area in m2, km2
                    or ha (-maxvoid 2.5km2; geographic rasters: cell areas at

@@ -1,12 +1,14 @@
 #include "lib/fill_band.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "lib/band_access.hpp"
 #include "lib/band_window.hpp"
 #include "lib/errors.hpp"
+#include "lib/fill_from.hpp"
 #include "lib/line_input.hpp"
 #include "lib/void_cap.hpp"
 #include "mcmd/fill_raster.hpp"
@@ -102,8 +104,17 @@ void fill_band_access(BandAccess& band, const FillRequest& request, const Option
   // band is known to have been fillable, and a cancel at the core's last
   // report (before it writes a one-tile raster) leaves the band untouched.
   const ProgressFn capped = sub_progress(progress, 0.0, 0.99);
+  std::unique_ptr<SecondDem> second;
+  if (!options.fill_from.empty()) {
+    if (options.fill.morph.channels) throw OptionError("FILL_FROM and MORPH=auto do not combine: pick one");
+    second = std::make_unique<SecondDem>(options.fill_from, band.source_dataset(), access.width, access.height,
+                                         options.fill_from_resampling);
+  }
   try {
-    fill_raster(access, params_for(options, band), tiling, capped, hooks);
+    if (second)
+      fill_raster_from(access, background_of(*second), params_for(options, band), tiling, capped, hooks);
+    else
+      fill_raster(access, params_for(options, band), tiling, capped, hooks);
   } catch (const std::invalid_argument&) {
     // Checked after the first pass, before anything is written.
     if (stats.void_cells > 0 && stats.known_cells == 0) fail_no_valid(request);

@@ -186,6 +186,13 @@ const std::map<std::string, Setter>& setters() {
       {"MORPH_CHANNEL", [](Options& o, auto& n, auto& v) { o.fill.morph.min_inflow = number_in(n, v, 1.0, 1e15); }},
       {"RIVERS", [](Options& o, auto& n, auto& v) { o.rivers = path_of(n, v); }},
       {"RIDGES", [](Options& o, auto& n, auto& v) { o.ridges = path_of(n, v); }},
+      {"FILL_FROM", [](Options& o, auto& n, auto& v) { o.fill_from = path_of(n, v); }},
+      {"FILL_FROM_RESAMPLING",
+       [](Options& o, auto& n, auto& v) {
+         const std::string r = upper(v);
+         if (r != "BILINEAR" && r != "CUBIC") fail(n, v, "bilinear or cubic");
+         o.fill_from_resampling = r == "CUBIC" ? "cubic" : "bilinear";
+       }},
       {"INNER_ONLY", [](Options& o, auto& n, auto& v) { o.inner_only = yes_no(n, v); }},
       {"MAX_VOID", set_max_void},
       {"MAX_DISTANCE",
@@ -220,7 +227,7 @@ const std::map<std::string, Setter>& setters() {
 
 const char* option_names() {
   return "METHOD, DELTA, I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, H, RT, RS, SEED, MORPH, "
-         "MORPH_CHANNEL, RIVERS, RIDGES, MAX_DISTANCE, INNER_ONLY, MAX_VOID, TILE_SIZE, TILING, NUM_THREADS";
+         "MORPH_CHANNEL, RIVERS, RIDGES, MAX_DISTANCE, INNER_ONLY, MAX_VOID, FILL_FROM, FILL_FROM_RESAMPLING, TILE_SIZE, TILING, NUM_THREADS";
 }
 
 TilingParams tiling_of(const Options& o) {

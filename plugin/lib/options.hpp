@@ -24,6 +24,8 @@ struct Options {
   int num_threads = 0;        // 0 = all CPUs
   std::string rivers;         // RIVERS=: a file of river lines (lib/line_input.hpp); "" = none
   std::string ridges;         // RIDGES=: likewise, ridge lines
+  std::string fill_from;      // FILL_FROM=: a second DEM (lib/fill_from.hpp); "" = none
+  std::string fill_from_resampling = "cubic";  // FILL_FROM_RESAMPLING=: bilinear or cubic
   bool inner_only = false;    // INNER_ONLY=YES: leave the voids touching the border
   // MAX_VOID=: leave the voids larger than this, in cells or (max_void_in_m2)
   // in square metres; 0 = no cap. void_cap_cells() turns it into cells.

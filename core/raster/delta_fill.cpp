@@ -1,0 +1,172 @@
+#include "mcmd/delta_fill.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+#include "common/distance.hpp"
+#include "mcmd/fill_raster.hpp"
+
+namespace mcmd {
+
+namespace {
+
+// Lags at which D's autocorrelation is measured, in cells.
+constexpr int kLags[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 96, 128};
+constexpr int kLagCount = sizeof(kLags) / sizeof(kLags[0]);
+
+// What a first read of the raster and the second DEM says.
+struct Survey {
+  double lo = 0, hi = 0;            // the known elevations' range
+  std::size_t known = 0;
+  std::size_t voids_without_s = 0;  // void cells the second DEM has no value for
+  double sums[kLagCount][5] = {};   // per lag: n, Σa, Σb, Σa², Σb², and Σab below
+  double cross[kLagCount] = {};
+
+  void add_row(const double* z, const std::uint8_t* valid, const double* s, int w, bool sample) {
+    for (int x = 0; x < w; ++x) {
+      if (!valid[x]) {
+        voids_without_s += std::isnan(s[x]);
+        continue;
+      }
+      lo = known ? std::min(lo, z[x]) : z[x];
+      hi = known ? std::max(hi, z[x]) : z[x];
+      ++known;
+    }
+    if (!sample) return;
+    for (int k = 0; k < kLagCount; ++k)
+      for (int x = 0; x + kLags[k] < w; ++x) {
+        const int y = x + kLags[k];
+        if (!valid[x] || !valid[y] || std::isnan(s[x]) || std::isnan(s[y])) continue;
+        const double a = z[x] - s[x], b = z[y] - s[y];
+        double* t = sums[k];
+        t[0] += 1, t[1] += a, t[2] += b, t[3] += a * a, t[4] += b * b;
+        cross[k] += a * b;
+      }
+  }
+
+  // The lag where the autocorrelation of D falls below 1/e (interpolated);
+  // the longest lag when it never does, 1 when D cannot be measured.
+  double correlation_length() const {
+    double previous_lag = 0, previous_r = 1;
+    for (int k = 0; k < kLagCount; ++k) {
+      const double* t = sums[k];
+      if (t[0] < 16) return 1.0;
+      const double cov = cross[k] / t[0] - (t[1] / t[0]) * (t[2] / t[0]);
+      const double va = t[3] / t[0] - (t[1] / t[0]) * (t[1] / t[0]);
+      const double vb = t[4] / t[0] - (t[2] / t[0]) * (t[2] / t[0]);
+      if (va <= 0 || vb <= 0) return 1.0;
+      const double r = cov / std::sqrt(va * vb);
+      if (r < 1 / M_E)
+        return previous_lag + (kLags[k] - previous_lag) * (previous_r - 1 / M_E) / (previous_r - r);
+      previous_lag = kLags[k], previous_r = r;
+    }
+    return kLags[kLagCount - 1];
+  }
+};
+
+Survey survey(const RasterAccess& raster, const Background& second) {
+  Survey out;
+  const int w = raster.width, rows = std::clamp((1 << 20) / w, 1, raster.height);
+  std::vector<double> z(static_cast<std::size_t>(w) * rows), s(z.size());
+  std::vector<std::uint8_t> valid(z.size());
+  for (int y = 0; y < raster.height; y += rows) {
+    const int h = std::min(rows, raster.height - y);
+    raster.read(0, y, w, h, z.data(), valid.data());
+    second.read(0, y, w, h, s.data());
+    for (int r = 0; r < h; ++r) {
+      const std::size_t at = static_cast<std::size_t>(r) * w;
+      out.add_row(z.data() + at, valid.data() + at, s.data() + at, w, (y + r) % 4 == 0);
+    }
+  }
+  return out;
+}
+
+// The plain fill of the void cells the second DEM has no value for.
+using PlainCells = std::unordered_map<std::size_t, double>;
+
+PlainCells plain_fill(const RasterAccess& raster, const Background& second, const FillParams& params,
+                      const TilingParams& tiling, const ProgressFn& progress) {
+  PlainCells cells;
+  RasterAccess capture = raster;
+  capture.write = [&](int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
+    std::vector<double> s(static_cast<std::size_t>(w) * h);
+    second.read(x0, y0, w, h, s.data());
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        if (mask[i] && std::isnan(s[i]))
+          cells[static_cast<std::size_t>(y0 + y) * raster.width + (x0 + x)] = z[i];
+      }
+  };
+  fill_raster(capture, params, tiling, progress);
+  return cells;
+}
+
+// The raster of differences D = z − s (0 at known cells the second DEM has
+// no value for: no correction is known there), whose filled voids are written
+// to `raster` as s + D·fade, or the plain fill where s is missing.
+RasterAccess difference_raster(const RasterAccess& raster, const Background& second, double fade_length,
+                               const PlainCells& plain) {
+  RasterAccess d = raster;
+  d.read = [&raster, &second](int x0, int y0, int w, int h, double* z, std::uint8_t* valid) {
+    raster.read(x0, y0, w, h, z, valid);
+    std::vector<double> s(static_cast<std::size_t>(w) * h);
+    second.read(x0, y0, w, h, s.data());
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (valid[i]) z[i] = std::isnan(s[i]) ? 0.0 : z[i] - s[i];
+  };
+  d.write = [&raster, &second, fade_length, &plain](int x0, int y0, int w, int h, const double* dz,
+                                                      const std::uint8_t* mask) {
+    // The distance to the nearest known cell, exact within `halo` of the rectangle.
+    const int halo = static_cast<int>(std::ceil(10 * fade_length)) + 1;
+    const int gx0 = std::max(0, x0 - halo), gy0 = std::max(0, y0 - halo);
+    const int gx1 = std::min(raster.width, x0 + w + halo), gy1 = std::min(raster.height, y0 + h + halo);
+    const int gw = gx1 - gx0, gh = gy1 - gy0;
+    std::vector<double> gz(static_cast<std::size_t>(gw) * gh);
+    std::vector<std::uint8_t> gvalid(gz.size());
+    raster.read(gx0, gy0, gw, gh, gz.data(), gvalid.data());
+    const std::vector<double> dist = distance_to_valid(gvalid.data(), gw, gh);
+    std::vector<double> s(static_cast<std::size_t>(w) * h), out(s.size());
+    std::vector<std::uint8_t> m(mask, mask + s.size());
+    second.read(x0, y0, w, h, s.data());
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        if (!m[i]) continue;
+        if (std::isnan(s[i])) {
+          const auto it = plain.find(static_cast<std::size_t>(y0 + y) * raster.width + (x0 + x));
+          m[i] = it != plain.end();
+          out[i] = m[i] ? it->second : 0.0;
+          continue;
+        }
+        const double d = dist[static_cast<std::size_t>(y + y0 - gy0) * gw + (x + x0 - gx0)];
+        const double fade = d > halo ? 0.0 : std::exp(-std::max(0.0, d - 1) / fade_length);
+        out[i] = s[i] + dz[i] * fade;
+      }
+    raster.write(x0, y0, w, h, out.data(), m.data());
+  };
+  return d;
+}
+
+}  // namespace
+
+void fill_raster_from(const RasterAccess& raster, const Background& second, const FillParams& params,
+                      const TilingParams& tiling, const ProgressFn& progress, const RasterFillHooks& hooks) {
+  const Survey survey_ = survey(raster, second);
+  FillParams p = params;
+  // Roughness in units of the terrain's own range, not of the differences'.
+  if (p.noise_unit <= 0 && survey_.known > 0) p.noise_unit = survey_.hi - survey_.lo;
+  const double fade_length = std::clamp(std::max(second.cell_ratio, survey_.correlation_length()), 1.0, 256.0);
+  PlainCells plain;
+  double start = 0.0;
+  if (survey_.voids_without_s > 0) {
+    plain = plain_fill(raster, second, params, tiling, sub_progress(progress, 0.0, 0.5));
+    start = 0.5;
+  }
+  fill_raster(difference_raster(raster, second, fade_length, plain), p, tiling, sub_progress(progress, start, 1.0),
+              hooks);
+}
+
+}  // namespace mcmd
