@@ -86,6 +86,10 @@ void is a set of nodata cells connected through their 8 neighbours, judged whole
 (<code>-maxvoid</code>): a number of cells (<code>5000</code>) or an area in m2, km2 or ha
 (<code>2.5km2</code>, <code>40ha</code>; cell areas of geographic rasters at their central
 latitude). 0 fills voids of any size.</dd>
+<dt>Second DEM (fill from)</dt><dd>Delta surface fill (<code>-fill-from</code>): inside the
+voids take the shape of a second DEM of the area (any CRS, resolution and extent; warped onto
+the input's grid) and interpolate only the difference between the two DEMs, faded away from the
+rim, so that the fill meets the rim without a step. Voids it does not cover get the plain fill.</dd>
 <dt>I (top-down shape)</dt><dd>Shapes the distance weighting Δ used when a void cell is
 interpolated from its ancestors. 0 blends the surrounding terrain evenly; I &gt; 0 favours nearby
 cells and gives rounded, bell-like fills; I &lt; 0 favours distant cells and gives sharper,
@@ -139,6 +143,7 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
     DELTA = 'DELTA'
     RS = 'RS'
     INNER_ONLY = 'INNER_ONLY'
+    FILL_FROM = 'FILL_FROM'
     MAX_VOID = 'MAX_VOID'
     CREATION_OPTIONS = 'OPTIONS'
     EXTRA = 'EXTRA'
@@ -173,7 +178,9 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
         return os.path.join(PLUGIN_DIR, 'icon.svg')
 
     def shortHelpString(self):  # noqa: N802
-        return self.tr(SHORT_HELP)
+        # The whole help: QGIS 3.22 shows only this one, in the dialog's panel and in
+        # qgis_process help (helpString() is shown nowhere).
+        return self.tr(SHORT_HELP) + self.tr(HELP)
 
     def helpString(self):  # noqa: N802
         return self.tr(HELP)
@@ -227,6 +234,9 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
                 self.addParameter(QgsProcessingParameterBoolean(
                     self.INNER_ONLY, self.tr('Fill only inner holes (leave voids touching the border)'),
                     defaultValue=False))
+                self.addParameter(QgsProcessingParameterRasterLayer(
+                    self.FILL_FROM, self.tr('Second DEM to take the voids\' shape from (delta surface fill)'),
+                    optional=True))
                 self.addParameter(QgsProcessingParameterString(
                     self.MAX_VOID, self.tr('Leave voids larger than (cells, or an area: 2.5km2, 40ha; 0 = no cap)'),
                     defaultValue='0'))
@@ -340,6 +350,9 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
                     raise QgsProcessingException(self.tr('RS must be "auto" or a number >= 0'))
                 if rs == 'auto' or float(rs) != 0.0:
                     args += ['-rs', rs]
+                second = self.parameterAsRasterLayer(parameters, self.FILL_FROM, context)
+                if second is not None:
+                    args += ['-fill-from', second.source()]
                 if self.parameterAsBoolean(parameters, self.INNER_ONLY, context):
                     args.append('-inner')
                 max_void = (self.parameterAsString(parameters, self.MAX_VOID, context) or '').strip()

@@ -104,7 +104,9 @@ def test_zip_and_install_scripts(tmp_path):
 def test_qgis_process_inner_only_and_void_cap(qp_env, cli, data, tmp_path):
     qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
     help_text = qgis_process(qp_env, 'help', 'mcmd:fillnodata').stdout
-    assert 'INNER_ONLY' in help_text and 'MAX_VOID' in help_text
+    assert 'INNER_ONLY' in help_text and 'MAX_VOID' in help_text and 'FILL_FROM' in help_text
+    # The full help, not only its first sentences.
+    assert 'Fill only inner holes' in help_text and 'Δ form' in help_text
     cases = [(['INNER_ONLY=true'], ['-inner']), (['MAX_VOID=20'], ['-maxvoid', '20'])]
     for k, (params, flags) in enumerate(cases):
         # Fresh copies: QGIS leaves statistics beside the layers it opened.
@@ -136,3 +138,20 @@ def test_qgis_process_names_as_gdal_fillnodata_and_unknown_names_refused(qp_env,
     assert bad.returncode != 0
     assert 'Unknown parameter MAX_DISTANCE (use DISTANCE' in bad.stdout + bad.stderr
     assert not os.path.exists(tmp_path / 'bad.tif')
+
+
+def test_qgis_process_fill_from(qp_env, cli, data, tmp_path):
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    second = data('peaks_truth_float32.tif', 'second')
+    ref = str(tmp_path / 'cli.tif')
+    run_cli(cli, ['-q', '-fill-from', data('peaks_truth_float32.tif', 'second_cli'),
+                  data('peaks_float32_utm.tif', 'cli'), ref])
+    out = str(tmp_path / 'qp.tif')
+    qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={data("peaks_float32_utm.tif")}',
+                 f'FILL_FROM={second}', f'OUTPUT={out}')
+    assert_same_raster(out, ref)
+    plain = str(tmp_path / 'plain.tif')
+    run_cli(cli, ['-q', data('peaks_float32_utm.tif', 'cli2'), plain])
+    _, _, [(a, _, _)] = read_bands(out)
+    _, _, [(b, _, _)] = read_bands(plain)
+    assert a.tobytes() != b.tobytes()
