@@ -83,12 +83,14 @@ Survey survey(const RasterAccess& raster, const Background& second) {
   return out;
 }
 
-// The plain fill of the void cells the second DEM has no value for.
-using PlainCells = std::unordered_map<std::size_t, double>;
+// Filled values of some void cells, by raster index.
+using CellValues = std::unordered_map<std::size_t, double>;
 
-PlainCells plain_fill(const RasterAccess& raster, const Background& second, const FillParams& params,
-                      const TilingParams& tiling, const ProgressFn& progress) {
-  PlainCells cells;
+// Fill `raster` and keep what it writes to the void cells where the second
+// DEM has a value (`with_s`) or has none.
+CellValues fill_and_keep(const RasterAccess& raster, const Background& second, bool with_s, const FillParams& params,
+                         const TilingParams& tiling, const ProgressFn& progress) {
+  CellValues cells;
   RasterAccess capture = raster;
   capture.write = [&](int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
     std::vector<double> s(static_cast<std::size_t>(w) * h);
@@ -96,7 +98,7 @@ PlainCells plain_fill(const RasterAccess& raster, const Background& second, cons
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
-        if (mask[i] && std::isnan(s[i]))
+        if (mask[i] && std::isnan(s[i]) != with_s)
           cells[static_cast<std::size_t>(y0 + y) * raster.width + (x0 + x)] = z[i];
       }
   };
@@ -105,10 +107,8 @@ PlainCells plain_fill(const RasterAccess& raster, const Background& second, cons
 }
 
 // The raster of differences D = z − s (0 at known cells the second DEM has
-// no value for: no correction is known there), whose filled voids are written
-// to `raster` as s + D·fade, or the plain fill where s is missing.
-RasterAccess difference_raster(const RasterAccess& raster, const Background& second, double fade_length,
-                               const PlainCells& plain) {
+// no value for: no correction is known there); writes go to `raster` as they are.
+RasterAccess differences(const RasterAccess& raster, const Background& second) {
   RasterAccess d = raster;
   d.read = [&raster, &second](int x0, int y0, int w, int h, double* z, std::uint8_t* valid) {
     raster.read(x0, y0, w, h, z, valid);
@@ -117,34 +117,52 @@ RasterAccess difference_raster(const RasterAccess& raster, const Background& sec
     for (std::size_t i = 0; i < s.size(); ++i)
       if (valid[i]) z[i] = std::isnan(s[i]) ? 0.0 : z[i] - s[i];
   };
-  d.write = [&raster, &second, fade_length, &plain](int x0, int y0, int w, int h, const double* dz,
-                                                      const std::uint8_t* mask) {
-    // The distance to the nearest known cell, exact within `halo` of the rectangle.
+  return d;
+}
+
+// The distance from each cell of a w×h rectangle at (x0, y0) to the nearest
+// known cell, exact up to `halo` (farther: more than `halo`).
+std::vector<double> rim_distance(const RasterAccess& raster, int x0, int y0, int w, int h, int halo) {
+  const int gx0 = std::max(0, x0 - halo), gy0 = std::max(0, y0 - halo);
+  const int gw = std::min(raster.width, x0 + w + halo) - gx0, gh = std::min(raster.height, y0 + h + halo) - gy0;
+  std::vector<double> gz(static_cast<std::size_t>(gw) * gh);
+  std::vector<std::uint8_t> gvalid(gz.size());
+  raster.read(gx0, gy0, gw, gh, gz.data(), gvalid.data());
+  const std::vector<double> grown = distance_to_valid(gvalid.data(), gw, gh);
+  std::vector<double> dist(static_cast<std::size_t>(w) * h);
+  for (int y = 0; y < h; ++y)
+    std::copy_n(grown.begin() + static_cast<std::size_t>(y + y0 - gy0) * gw + (x0 - gx0), w,
+                dist.begin() + static_cast<std::size_t>(y) * w);
+  return dist;
+}
+
+// The differences, whose filled voids are written to `raster` as
+// s + D·fade, or, with the smooth D of a rough fill, as
+// s + D − (1 − fade)·D_smooth (the relief is not faded); the plain fill where
+// s has no value.
+RasterAccess delta_surface(const RasterAccess& raster, const Background& second, double fade_length,
+                           const CellValues& plain, const CellValues* smooth) {
+  RasterAccess d = differences(raster, second);
+  d.write = [&raster, &second, fade_length, &plain, smooth](int x0, int y0, int w, int h, const double* dz,
+                                                              const std::uint8_t* mask) {
     const int halo = static_cast<int>(std::ceil(10 * fade_length)) + 1;
-    const int gx0 = std::max(0, x0 - halo), gy0 = std::max(0, y0 - halo);
-    const int gx1 = std::min(raster.width, x0 + w + halo), gy1 = std::min(raster.height, y0 + h + halo);
-    const int gw = gx1 - gx0, gh = gy1 - gy0;
-    std::vector<double> gz(static_cast<std::size_t>(gw) * gh);
-    std::vector<std::uint8_t> gvalid(gz.size());
-    raster.read(gx0, gy0, gw, gh, gz.data(), gvalid.data());
-    const std::vector<double> dist = distance_to_valid(gvalid.data(), gw, gh);
-    std::vector<double> s(static_cast<std::size_t>(w) * h), out(s.size());
-    std::vector<std::uint8_t> m(mask, mask + s.size());
+    const std::vector<double> dist = rim_distance(raster, x0, y0, w, h, halo);
+    std::vector<double> s(dist.size()), out(dist.size());
+    std::vector<std::uint8_t> m(mask, mask + dist.size());
     second.read(x0, y0, w, h, s.data());
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * w + x;
-        if (!m[i]) continue;
-        if (std::isnan(s[i])) {
-          const auto it = plain.find(static_cast<std::size_t>(y0 + y) * raster.width + (x0 + x));
-          m[i] = it != plain.end();
-          out[i] = m[i] ? it->second : 0.0;
-          continue;
-        }
-        const double d = dist[static_cast<std::size_t>(y + y0 - gy0) * gw + (x + x0 - gx0)];
-        const double fade = d > halo ? 0.0 : std::exp(-std::max(0.0, d - 1) / fade_length);
-        out[i] = s[i] + dz[i] * fade;
+    for (std::size_t i = 0; i < dist.size(); ++i) {
+      if (!m[i]) continue;
+      const std::size_t cell = static_cast<std::size_t>(y0 + i / w) * raster.width + (x0 + i % w);
+      if (std::isnan(s[i])) {
+        const auto it = plain.find(cell);
+        m[i] = it != plain.end();
+        out[i] = m[i] ? it->second : 0.0;
+        continue;
       }
+      const double fade = dist[i] > halo ? 0.0 : std::exp(-std::max(0.0, dist[i] - 1) / fade_length);
+      const auto it = smooth ? smooth->find(cell) : CellValues::const_iterator{};
+      out[i] = smooth && it != smooth->end() ? s[i] + dz[i] - (1 - fade) * it->second : s[i] + dz[i] * fade;
+    }
     raster.write(x0, y0, w, h, out.data(), m.data());
   };
   return d;
@@ -159,14 +177,23 @@ void fill_raster_from(const RasterAccess& raster, const Background& second, cons
   // Roughness in units of the terrain's own range, not of the differences'.
   if (p.noise_unit <= 0 && survey_.known > 0) p.noise_unit = survey_.hi - survey_.lo;
   const double fade_length = std::clamp(std::max(second.cell_ratio, survey_.correlation_length()), 1.0, 256.0);
-  PlainCells plain;
-  double start = 0.0;
-  if (survey_.voids_without_s > 0) {
-    plain = plain_fill(raster, second, params, tiling, sub_progress(progress, 0.0, 0.5));
-    start = 0.5;
+  // Up to three passes: the plain fill where s has no value, the smooth
+  // differences under a rough fill, and the fill itself.
+  const bool rough = adds_roughness(p);
+  const int passes = 1 + (survey_.voids_without_s > 0) + rough;
+  int pass = 0;
+  const auto next = [&] {
+    const double lo = static_cast<double>(pass) / passes;
+    return sub_progress(progress, lo, static_cast<double>(++pass) / passes);
+  };
+  CellValues plain, smooth;
+  if (survey_.voids_without_s > 0) plain = fill_and_keep(raster, second, false, params, tiling, next());
+  if (rough) {
+    FillParams flat = p;
+    flat.rs = 0, flat.rs_auto = false;
+    smooth = fill_and_keep(differences(raster, second), second, true, flat, tiling, next());
   }
-  fill_raster(difference_raster(raster, second, fade_length, plain), p, tiling, sub_progress(progress, start, 1.0),
-              hooks);
+  fill_raster(delta_surface(raster, second, fade_length, plain, rough ? &smooth : nullptr), p, tiling, next(), hooks);
 }
 
 }  // namespace mcmd

@@ -154,3 +154,41 @@ TEST(CliFillFrom, ErrorsAreOneLineAndLeaveNothing) {
 
 }  // namespace
 }  // namespace mcmd::test
+
+namespace mcmd::test {
+namespace {
+
+// With -rs, the relief is added on top of the delta surface, not faded with
+// the differences: rough minus smooth is the plain fill's relief, deep inside
+// the void too.
+TEST(CliFillFrom, RoughnessIsNotFadedAwayFromTheRim) {
+  Files f;
+  const std::string second = f.dir.file("second.tif");
+  warp(f.truth, second, {"-tr", "300", "300", "-r", "average"});
+  const auto run = [&](const std::vector<std::string>& extra, const std::string& name) {
+    std::vector<std::string> args = {"-q"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.push_back(f.src);
+    args.push_back(f.dir.file(name));
+    const RunResult r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return band_values(f.dir.file(name));
+  };
+  const auto ff = run({"-fill-from", second}, "ff.tif"), ff_rough = run({"-fill-from", second, "-rs", "0.1"}, "ffr.tif");
+  const auto plain = run({}, "p.tif"), plain_rough = run({"-rs", "0.1"}, "pr.tif");
+  // The blob's centre cells (the blob: centre 56,48, radius 21.6).
+  double sxy = 0, sxx = 0, syy = 0;
+  std::size_t n = 0;
+  for (int y = 38; y < 58; ++y)
+    for (int x = 46; x < 66; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * 160 + x;
+      const double a = ff_rough[i] - ff[i], b = plain_rough[i] - plain[i];
+      sxy += a * b, sxx += a * a, syy += b * b, ++n;
+    }
+  ASSERT_GT(std::sqrt(syy / n), 1.0);  // the plain fill's relief there, in metres
+  EXPECT_GT(sxy / std::sqrt(sxx * syy), 0.9);
+  EXPECT_NEAR(std::sqrt(sxx / n), std::sqrt(syy / n), 0.2 * std::sqrt(syy / n));
+}
+
+}  // namespace
+}  // namespace mcmd::test

@@ -11,7 +11,8 @@
 // cells of the raster) and the correlation length of D along the rows (the
 // lag where its autocorrelation falls below 1/e), within [1, 256]. Void cells
 // where s has no value get the plain fill (a first pass, only when there are
-// such cells).
+// such cells). With roughness, D is also filled smooth (D̂) and the fill is
+// s + D − (1 − fade)·D̂: the relief (D − D̂, 0 at the data) is not faded.
 #pragma once
 
 #include <functional>
