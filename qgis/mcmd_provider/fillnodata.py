@@ -427,4 +427,9 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
             raise QgsProcessingException(self.tr(
                 'mcmd_fillnodata finished but wrote no output at {}').format(output))
         feedback.setProgress(100)
+        # Name the loaded result after its input ("dem filled"), not the output's label.
+        if context.willLoadLayerOnCompletion(output):
+            layer = self.parameterAsRasterLayer(parameters, self.INPUT, context)
+            if layer is not None:
+                context.layerToLoadOnCompletionDetails(output).name = self.tr('{} filled').format(layer.name())
         return {self.OUTPUT: output}

@@ -307,3 +307,14 @@ def test_remove_outputs_takes_only_what_the_run_left(tmp_path):
     remove_outputs(str(tmp_path / 'filled.tif'), before)
     assert sorted(os.listdir(tmp_path)) == ['filled.tif.aux.xml', 'other.tif',
                                             'prefilled.tif', 'unrelated-new.tif']
+
+
+def test_result_layer_is_named_after_its_input(use_cli, data, tmp_path):
+    import processing
+    from qgis.core import QgsProcessingContext, QgsProcessingFeedback, QgsProcessingUtils
+    context = QgsProcessingContext()
+    out = str(tmp_path / 'named.tif')
+    src = data('peaks_int16_geo.tif')
+    context.addLayerToLoadOnCompletion(out, QgsProcessingContext.LayerDetails('Filled', context.project(), 'OUTPUT'))
+    processing.run(ALG, {'INPUT': src, 'OUTPUT': out}, context=context, feedback=QgsProcessingFeedback())
+    assert context.layerToLoadOnCompletionDetails(out).name == 'peaks_int16_geo filled'
