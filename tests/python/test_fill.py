@@ -135,3 +135,18 @@ def test_inner_only_and_max_void_match_cli(tmp_path):
     assert np.isnan(mcmd.fill(a, max_void=35)[20:26, 30:36]).all()
     with pytest.raises(ValueError, match="MAX_VOID=1.5"):
         mcmd.fill(a, max_void=1.5)
+
+
+def test_fill_from_a_second_dem_of_the_array_s_shape(tmp_path):
+    z, voids = terrain()
+    a = z.astype(np.float32)
+    a[voids] = np.nan
+    coarse = write(tmp_path / "second.tif", (z + 3.0).astype(np.float32))  # same grid: used cell for cell
+    got = mcmd.fill(a, fill_from=str(coarse))
+    plain = mcmd.fill(a)
+    assert not np.isnan(got).any()
+    assert same_bits(got[~voids], a[~voids])
+    assert np.abs(got[voids] - z[voids]).mean() < np.abs(plain[voids] - z[voids]).mean()
+    small = write(tmp_path / "small.tif", z[:50, :50].astype(np.float32))
+    with pytest.raises(mcmd.Error, match="sizes differ"):
+        mcmd.fill(a, fill_from=str(small))
