@@ -17,7 +17,7 @@ from qgis.core import (Qgis,
                        QgsProcessingParameterRasterLayer,
                        QgsProcessingParameterString,
                        QgsRasterFileWriter)
-from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtCore import QCoreApplication, QUrl
 from qgis.PyQt.QtGui import QIcon
 
 from . import tool
@@ -56,77 +56,9 @@ NUMBERS = [
     ('THREADS', '-threads', 'Number of threads (0 = the tool\'s default)', _INT, 0, 0, 1024, True),
 ]
 
-HELP = """<p>Fills the nodata voids of a raster (typically a DEM) with <b>MCMD</b>, Morphologically
-Constrained Midpoint Displacement: a bottom-up pass spreads the known elevations up a nested
-subdivision hierarchy, then a top-down midpoint-displacement pass interpolates every void cell
-from its ancestors. Known cells are copied unchanged, bit for bit; only nodata cells (band nodata
-value, NaN, mask or alpha band, or the validity mask below) are written. It runs the
-<code>mcmd_fillnodata</code> command-line tool, so the result is exactly that of the tool with the
-same options; the command is shown in the log.</p>
-<h3>Parameters</h3>
-<dl>
-<dt>Input layer</dt><dd>Raster with voids. Georeferencing, CRS, nodata value, metadata and band
-descriptions are kept in the output.</dd>
-<dt>Bands</dt><dd>Bands to fill (<code>-b</code>); empty fills every band except alpha bands.
-Bands not filled are copied unchanged.</dd>
-<dt>Validity mask</dt><dd>Optional raster of the same size whose zero cells are voids too, added
-to the band's own nodata/mask. <i>Do not use the default validity mask</i> ignores the band's
-nodata value, mask and alpha band: only the validity mask and NaN cells are then voids.</dd>
-<dt>Method</dt><dd><b>MCMD</b> (default) keeps the paper's bottom-up-then-top-down structure with
-better ingredients (weighted bottom-up pass, cubic stencils, thin-plate relaxation): smooth fills
-without creases, continuous slopes at the void border. <b>Paper, diamond-square</b> and <b>Paper,
-triangle-edge</b> are the published algorithm exactly; they are less accurate and their
-hillshades show a lattice of dimples (diamond-square) or straight creases (triangle-edge).</dd>
-<dt>Maximum distance</dt><dd>Cells farther than this many pixels from a known cell stay nodata;
-0 fills every void whatever its size.</dd>
-<dt>Fill only inner holes</dt><dd>Leave the voids that touch the raster's border as nodata:
-the sea around a coast, the outside of a survey footprint, scene edges (<code>-inner</code>). A
-void is a set of nodata cells connected through their 8 neighbours, judged whole however large.</dd>
-<dt>Leave voids larger than</dt><dd>Voids of more cells than this stay nodata
-(<code>-maxvoid</code>): a number of cells (<code>5000</code>) or an area in m2, km2 or ha
-(<code>2.5km2</code>, <code>40ha</code>; cell areas of geographic rasters at their central
-latitude). 0 fills voids of any size.</dd>
-<dt>Second DEM (fill from)</dt><dd>Delta surface fill (<code>-fill-from</code>): inside the
-voids take the shape of a second DEM of the area (any CRS, resolution and extent; warped onto
-the input's grid) and interpolate only the difference between the two DEMs, faded away from the
-rim, so that the fill meets the rim without a step. Voids it does not cover get the plain fill.</dd>
-<dt>I (top-down shape)</dt><dd>Shapes the distance weighting Δ used when a void cell is
-interpolated from its ancestors. 0 blends the surrounding terrain evenly; I &gt; 0 favours nearby
-cells and gives rounded, bell-like fills; I &lt; 0 favours distant cells and gives sharper,
-ridge-like fills. |I| &lt; 1, = 1, &gt; 1 give bell, linear, ridged profiles.</dd>
-<dt>I_bu (bottom-up shape)</dt><dd>The same weighting for the bottom-up pass that estimates coarse
-elevations inside the void from the known cells: large positive values let the nearest known
-cells dominate (features carried from the border into the void), negative values flatten.</dd>
-<dt>Δ form</dt><dd><b>normalized</b> (default): a weighted mean, so the fill does not depend on
-the elevation datum (filling z+c gives fill+c). <b>paper</b>: the paper's formula, which pulls
-fills towards 0 when I or I_bu is not 0.</dd>
-<dt>RS (displacement scale)</dt><dd>Amplitude of the random midpoint displacement, as a fraction
-of the known elevation range of the band (0.01 on a DEM spanning 1000 m is about 10 m of
-relief). 0 (default) gives a smooth, deterministic fill; a number adds fractal roughness; <code>auto</code> calibrates amplitude and H from the known terrain
-around each void so the fill looks as rough as its surroundings.</dd>
-<dt>H (roughness exponent)</dt><dd>Hurst-like exponent: how fast the displacement shrinks at finer
-levels. Low H (0.2) gives rough, jagged terrain; high H (0.8) smooth, rolling terrain. No effect
-when RS is 0.</dd>
-<dt>rt (displacement bias)</dt><dd>Shifts the random deviate in [-1, 1] before scaling: values
-&gt; 0 raise, &lt; 0 lower the filled terrain on average. No effect when RS is 0.</dd>
-<dt>Seed</dt><dd>Seed of the counter-based noise: the same seed gives the same terrain, whatever
-the tile size or number of threads. No effect when RS is 0.</dd>
-<dt>Tile size</dt><dd>Side of the square processing tiles, 2^n+1 pixels (e.g. 513, 1025); 0
-chooses automatically. Tiles bound memory on rasters of more than 2^21 pixels; smaller ones are
-filled whole by the default method, each void once (add <code>-o TILING=ALWAYS</code> below to
-tile them too). The
-result changes little with the tile size (RMSE within 1 % on the benchmark).</dd>
-<dt>Threads</dt><dd>Worker threads; 0 lets the tool decide (all CPUs). The result does not depend
-on it.</dd>
-<dt>Creation options</dt><dd>GDAL creation options of the output format, e.g.
-<code>COMPRESS=DEFLATE|TILED=YES</code>.</dd>
-<dt>Additional command-line parameters</dt><dd>Appended as is to the command line, e.g.
-<code>-o RIDGE_I=2</code> for any other MCMDFillNodata option.</dd>
-</dl>
-<p>The <code>mcmd_fillnodata</code> executable is taken from Settings &gt; Options &gt; Processing
-&gt; Providers &gt; MCMD void fill, else from a <code>bin/</code> folder next to the plugin, else
-from PATH.</p>
-"""
+# The full help, shipped beside the plugin as an HTML page (also the help URL).
+HELP_FILE = tool.help_file('fillnodata')
+HELP = tool.read_help(HELP_FILE)
 
 SHORT_HELP = ('Fills nodata voids of a raster (DEM) with Morphologically Constrained Midpoint '
               'Displacement by running the mcmd_fillnodata tool. Known cells are never changed. '
@@ -184,6 +116,10 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
 
     def helpString(self):  # noqa: N802
         return self.tr(HELP)
+
+    def helpUrl(self):  # noqa: N802
+        # The help page shipped with the plugin: the dialog's Help button opens it.
+        return QUrl.fromLocalFile(HELP_FILE).toString()
 
     def shortDescription(self):  # noqa: N802
         return self.tr('Fills raster nodata voids with MCMD (mcmd_fillnodata).')

@@ -26,7 +26,7 @@ from qgis.core import (Qgis,
                        QgsProcessingParameterString,
                        QgsProcessingParameterVectorLayer,
                        QgsRasterFileWriter)
-from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtCore import QCoreApplication, QUrl
 from qgis.PyQt.QtGui import QIcon
 
 from . import tool
@@ -71,28 +71,9 @@ STRINGS = [
     ('UNKNOWN', '-unknown', 'Sketch cells to synthesise (white, black, none or a value)', True),
 ]
 
-HELP = """<p>Makes a terrain (a DEM) with <b>MCMD</b> by running the <code>mcmd_terrain</code>
-tool: from scratch, around a <b>sketch</b> (a grey image or raster whose white cells are to be
-made, as in Belhadj 2007), around <b>ridge and river lines</b>, or around a generated
-<b>skeleton of ridges and rivers</b>. Constraint cells are kept bit for bit.</p>
-<dl>
-<dt>Sketch</dt><dd>Optional raster; its known cells are constraints, white (255 or 65535) or
-nodata cells are made. Its size and georeferencing become the output's.</dd>
-<dt>States</dt><dd>Optional raster of the sketch's size marking ridge (1 or red) and river
-(2 or blue) cells.</dd>
-<dt>Ridge lines, river lines</dt><dd>Optional line layers (files), reprojected to the output's
-CRS; their cells become crests and valleys. Heights where they have none: the ridge and river
-heights below.</dd>
-<dt>Width, height, extent, CRS</dt><dd>Size and georeferencing of a terrain made without a
-sketch.</dd>
-<dt>Roughness RS</dt><dd>A number is a fraction of the constraints' elevation range; with
-<code>m</code> an amplitude in elevation units (<code>300m</code>), needed from scratch.</dd>
-<dt>Hillshade</dt><dd>Optional PNG preview.</dd>
-</dl>
-<p>The <code>mcmd_terrain</code> executable is looked for next to <code>mcmd_fillnodata</code>
-(Settings &gt; Options &gt; Processing &gt; Providers &gt; MCMD void fill, or the plugin's
-<code>bin/</code> folder), then on PATH.</p>
-"""
+# The full help, shipped beside the plugin as an HTML page (also the help URL).
+HELP_FILE = tool.help_file('terrain')
+HELP = tool.read_help(HELP_FILE)
 
 
 def find_terrain_executable():
@@ -165,11 +146,16 @@ class TerrainAlgorithm(QgsProcessingAlgorithm):
         return os.path.join(PLUGIN_DIR, 'icon.svg')
 
     def shortHelpString(self):  # noqa: N802
+        # The whole help: QGIS 3.22 shows only this one (dialog panel, qgis_process help).
         return self.tr('Makes a terrain from scratch, around a sketch, ridge and river lines or a generated '
-                       'skeleton, by running the mcmd_terrain tool.')
+                       'skeleton, by running the mcmd_terrain tool.') + self.tr(HELP)
 
     def helpString(self):  # noqa: N802
         return self.tr(HELP)
+
+    def helpUrl(self):  # noqa: N802
+        # The help page shipped with the plugin: the dialog's Help button opens it.
+        return QUrl.fromLocalFile(HELP_FILE).toString()
 
     def flags(self):
         return super().flags() | QgsProcessingAlgorithm.FlagDisplayNameIsLiteral

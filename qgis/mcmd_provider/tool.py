@@ -293,3 +293,17 @@ def remove_outputs(path, before):
         except OSError:
             pass
     return removed
+
+
+def help_file(name):
+    """The path of an algorithm's help page, help/<name>.html in the plugin."""
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)), 'help', name + '.html')
+
+
+def read_help(path):
+    """The body of a help page, as Processing's help panel shows it."""
+    with open(path, encoding='utf-8') as f:
+        text = f.read()
+    start, end = text.find('<body>'), text.rfind('</body>')
+    return text[start + len('<body>'):end].strip() if start >= 0 and end > start else text
+

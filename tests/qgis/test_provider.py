@@ -75,6 +75,14 @@ def test_provider_and_algorithm_registered(qgis_app):
     assert alg is not None
     assert alg.displayName() == 'Fill nodata (MCMD)'
     assert alg.shortHelpString() and 'RS' in alg.helpString()
+    # The help URL is the page shipped in the plugin, the same text as the panel's.
+    from qgis.PyQt.QtCore import QUrl
+    page = QUrl(alg.helpUrl()).toLocalFile()
+    assert page.endswith('mcmd_provider/help/fillnodata.html') and os.path.isfile(page)
+    with open(page, encoding='utf-8') as f:
+        assert 'Fill only inner holes' in f.read()
+    terrain = QgsApplication.processingRegistry().algorithmById('mcmd:terrain')
+    assert os.path.isfile(QUrl(terrain.helpUrl()).toLocalFile())
     names = [p.name() for p in alg.parameterDefinitions()]
     for name in ['INPUT', 'BANDS', 'MASK_LAYER', 'METHOD', 'I', 'I_BU', 'H', 'RT', 'RS', 'SEED',
                  'DISTANCE', 'INNER_ONLY', 'MAX_VOID', 'TILE_SIZE', 'THREADS', 'OPTIONS', 'OUTPUT']:
