@@ -104,12 +104,15 @@ class ProgressParser:
 
     Fed arbitrary chunks of stdout (the tool flushes after every dot, without
     newlines), it reports each new percentage through `on_progress`; any other
-    text is collected into lines and given to `on_text`.
+    text is collected into lines and given to `on_text`, and so is the
+    finished progress line when `echo_progress` is set (the command's output
+    as a log shows it).
     """
 
-    def __init__(self, on_progress, on_text=None):
+    def __init__(self, on_progress, on_text=None, echo_progress=False):
         self.on_progress = on_progress
         self.on_text = on_text
+        self.echo_progress = echo_progress
         self.percent = 0.0
         self._digits = ''
         self._line = ''
@@ -144,14 +147,16 @@ class ProgressParser:
                 line = self._line.strip()
                 self._line = ''
                 self._in_bar = False
-                if line and not _is_progress_text(line) and self.on_text:
-                    self.on_text(line)
+                self._emit(line)
 
     def close(self):
         self._flush_number()
         line = self._line.strip()
         self._line = ''
-        if line and not _is_progress_text(line) and self.on_text:
+        self._emit(line)
+
+    def _emit(self, line):
+        if line and self.on_text and (self.echo_progress or not _is_progress_text(line)):
             self.on_text(line)
 
 
@@ -211,7 +216,7 @@ def run(args, on_progress=None, on_info=None, is_canceled=None, poll_s=0.05, too
     for thread in threads:
         thread.start()
 
-    parser = ProgressParser(on_progress or (lambda p: None), on_info)
+    parser = ProgressParser(on_progress or (lambda p: None), on_info, echo_progress=True)
     err_text = ''
     open_streams = 2
     canceled = False

@@ -301,6 +301,11 @@ def test_progress_parser_reads_gdal_dots():
     assert seen[0] == 0 and seen[-1] == 100
     assert seen == sorted(seen) and 7.5 in seen and 52.5 in seen
     assert text == ['Warning 1: something 42']
+    echoed = []
+    parser = ProgressParser(lambda p: None, echoed.append, echo_progress=True)
+    parser.feed('0...10...20...30...40...50...60...70...80...90...100 - done.\n')
+    parser.close()
+    assert echoed == ['0...10...20...30...40...50...60...70...80...90...100 - done.']
 
 
 def test_remove_outputs_takes_only_what_the_run_left(tmp_path):

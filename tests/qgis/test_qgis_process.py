@@ -63,6 +63,8 @@ def test_qgis_process_fills_like_the_cli(qp_env, cli, data, tmp_path):
     run = qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={src}', f'OUTPUT={out}')
     # The command is logged, and the tool found on PATH.
     assert 'mcmd_fillnodata command:' in run.stdout
+    # The log's command output holds what the tool printed.
+    assert '100 - done.' in run.stdout.split('mcmd_fillnodata command output:')[1]
     assert shutil.which('mcmd_fillnodata', path=qp_env['PATH']) in run.stdout
     assert_same_raster(out, ref)
     _, _, [(before, nodata, _)] = read_bands(src)
