@@ -56,7 +56,7 @@ void fill_by_path(const RasterAccess& raster, const FillParams& params, const Ti
   if (fills_whole(raster.width, raster.height, params, tiling))
     detail::fill_whole_raster(raster, params, tiling, progress, hooks, left);
   else
-    detail::tiled_fill(raster, params, tiling, progress, hooks);
+    detail::tiled_fill(raster, params, tiling, progress, hooks, left);
 }
 
 }  // namespace

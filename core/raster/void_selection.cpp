@@ -33,6 +33,11 @@ std::size_t LeftVoids::count(const std::vector<VoidRun>& runs) const {
   return n;
 }
 
+void LeftVoids::mark_row(int y, std::uint8_t* row) const {
+  if (runs_.empty()) return;
+  for (std::size_t k = row_start_[y]; k < row_start_[y + 1]; ++k) std::fill(row + runs_[k].x0, row + runs_[k].x1, 1);
+}
+
 VoidSelector::VoidSelector(int width, int height, const TilingParams& tiling)
     : width_(width), height_(height), inner_only_(tiling.inner_only), max_cells_(tiling.max_void_cells) {}
 

@@ -29,6 +29,8 @@ class LeftVoids {
   void clear(int x0, int y0, int w, int h, std::uint8_t* mask) const;
   // The number of cells of `runs` that are left.
   std::size_t count(const std::vector<VoidRun>& runs) const;
+  // Sets row[x] = 1 on the left cells of row y (row: the raster's width).
+  void mark_row(int y, std::uint8_t* row) const;
 
  private:
   std::vector<VoidRun> runs_;

@@ -355,7 +355,7 @@ void fill_whole_raster(const RasterAccess& raster, const FillParams& params, con
     plain.morph.channels = false;  // the tiles fill without channels
     if (hooks.stats) *hooks.stats = st;  // what is written so far, should the tiles stop
     try {
-      tiled_fill(in_memory_far(r, raster, far), plain, tiling, sub_progress(progress, 0.5, 1.0), sub);
+      tiled_fill(in_memory_far(r, raster, far), plain, tiling, sub_progress(progress, 0.5, 1.0), sub, left);
     } catch (...) {
       if (hooks.stats) hooks.stats->cells_written += tiled.cells_written;
       throw;

@@ -778,6 +778,24 @@ TEST(VoidSelection, InnerOnlyLeavesTheSeaAndFillsTheLake) {
   }
 }
 
+TEST(VoidSelection, TilesHoldingOnlyLeftVoidsAreNotSolved) {
+  MemRaster r = terrain_raster(300, 200);
+  for (int y = 0; y < r.h; ++y)  // a sea over the left third, several tiles wide
+    for (int x = 0; x < 100; ++x) r.valid[r.at(x, y)] = 0;
+  punch_disc(r, 220, 100, 40);  // a lake larger than a small component
+  Recorded plain, inner;
+  const std::vector<double> all = run(r, 33, 2, plain.hooks);
+  fill_raster(r.access(), FillParams{}, selecting(true, 0, 33, 2), {}, inner.hooks);
+  EXPECT_GT(inner.stats.windows_solved, 0u);
+  EXPECT_LT(inner.stats.windows_solved, plain.stats.windows_solved / 2);
+  // The lake's cells: the same windows, the same bits.
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 100; x < r.w; ++x) {
+      if (r.valid[r.at(x, y)]) continue;
+      ASSERT_EQ(all[r.at(x, y)], r.out[r.at(x, y)]) << x << "," << y;
+    }
+}
+
 TEST(VoidSelection, InnerOnlyLakeIsFilledAsWithoutTheOption) {
   // Raster held whole: the sea is not solved, the lake's field is its own.
   MemRaster r = terrain_raster(200, 150);

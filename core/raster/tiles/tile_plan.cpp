@@ -46,10 +46,24 @@ void needs_of_large(const TileLayout& layout, const std::vector<Box>& large, std
     }
 }
 
+// No job for the voids left unfilled (-inner, -maxvoid): a tile whose output
+// region holds only left voids, a small component all of whose cells are
+// left. Every cell that is filled still gets the same windows, so the same
+// bits (a window's region is where it is blended).
+void skip_left_voids(const LeftVoids& left, ScanResult& scan, std::vector<SmallComponent>& small) {
+  if (left.empty()) return;
+  for (std::size_t t = 0; t < scan.needs.size(); ++t) scan.needs[t] &= scan.needs_filled[t];
+  std::erase_if(small, [&left](const SmallComponent& c) {
+    std::size_t cells = 0;
+    for (const VoidRun& r : c.runs) cells += static_cast<std::size_t>(r.x1 - r.x0);
+    return left.count(c.runs) == cells;
+  });
+}
+
 }  // namespace
 
 bool plan_tiles(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
-                const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan) {
+                const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan, const LeftVoids& left) {
   plan.layout = TileLayout(raster.width, raster.height,
                            effective_tile_side(raster.width, raster.height, tiling.tile_side));
   const TileLayout& layout = plan.layout;
@@ -66,7 +80,7 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
   if (!plan.single && params.method == Method::mcmd && tiling.max_distance == 0 && small_extent >= 1)
     finder.emplace(raster.width, small_extent);
   ScanResult scan = scan_raster(raster, layout, plan.single ? nullptr : &plan.guide, sub_progress(progress, 0.0, 2.0 / 3),
-                                finder ? &*finder : nullptr);
+                                finder ? &*finder : nullptr, &left);
   if (finder) {
     finder->finish();
     if (finder->overflow()) finder.reset();
@@ -95,6 +109,7 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
     plan.small_runs.build(plan.small, raster.height);
     needs_of_large(layout, finder->large(), scan.needs);
   }
+  skip_left_voids(left, scan, plan.small);
   for (std::size_t c = 0; c < plan.small.size(); ++c) plan.jobs.push_back(Job{true, c});
   for (std::size_t t = 0; t < scan.needs.size(); ++t)
     if (scan.needs[t]) plan.jobs.push_back(Job{false, t});

@@ -14,6 +14,7 @@
 #include "raster/tiles/tile_layout.hpp"
 #include "raster/tiles/tile_window.hpp"
 #include "raster/void_components.hpp"
+#include "raster/void_selection.hpp"
 
 namespace mcmd::detail {
 
@@ -53,6 +54,6 @@ struct TilePlan {
 // void (nothing to do). Fills stats' counts. Throws std::invalid_argument
 // when no cell is known, Cancelled.
 bool plan_tiles(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
-                const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan);
+                const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan, const LeftVoids& left);
 
 }  // namespace mcmd::detail

@@ -21,7 +21,7 @@ std::vector<std::array<int, 2>> covering_tiles(const TileAxis& axis) {
 }  // namespace
 
 ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, CoarseGuide* guide,
-                       const ProgressFn& progress, ComponentFinder* components) {
+                       const ProgressFn& progress, ComponentFinder* components, const LeftVoids* left) {
   const int W = raster.width, H = raster.height;
   const int nx = layout.x.count();
   const int chunk = std::clamp((1 << 20) / W, 1, H);
@@ -34,7 +34,10 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
   s.lo = std::numeric_limits<double>::infinity();
   s.hi = -s.lo;
   s.needs.assign(layout.tile_count(), 0);
-  std::vector<std::uint8_t> row_void(static_cast<std::size_t>(nx));
+  const bool selecting = left && !left->empty();
+  if (selecting) s.needs_filled.assign(layout.tile_count(), 0);
+  std::vector<std::uint8_t> row_void(static_cast<std::size_t>(nx)), row_filled(row_void.size());
+  std::vector<std::uint8_t> left_row(selecting ? static_cast<std::size_t>(W) : 0);
   for (int y0 = 0; y0 < H; y0 += chunk) {
     const int rows = std::min(chunk, H - y0);
     raster.read(0, y0, W, rows, z.data(), valid.data());
@@ -43,6 +46,11 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
       const double* zr = z.data() + static_cast<std::size_t>(r) * W;
       const std::uint8_t* vr = valid.data() + static_cast<std::size_t>(r) * W;
       std::fill(row_void.begin(), row_void.end(), 0);
+      std::fill(row_filled.begin(), row_filled.end(), 0);
+      if (selecting) {
+        std::fill(left_row.begin(), left_row.end(), 0);
+        left->mark_row(y0 + r, left_row.data());
+      }
       std::size_t known = 0;
       for (int x = 0; x < W; ++x) {
         if (vr[x]) {
@@ -52,6 +60,10 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
         } else {
           row_void[cx[x][0]] = 1;
           if (cx[x][1] >= 0) row_void[cx[x][1]] = 1;
+          if (selecting && !left_row[x]) {
+            row_filled[cx[x][0]] = 1;
+            if (cx[x][1] >= 0) row_filled[cx[x][1]] = 1;
+          }
         }
       }
       if (components) components->add_row(y0 + r, vr);
@@ -62,6 +74,9 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
         if (ty < 0) continue;
         std::uint8_t* need = s.needs.data() + static_cast<std::size_t>(ty) * nx;
         for (int tx = 0; tx < nx; ++tx) need[tx] |= row_void[tx];
+        if (!selecting) continue;
+        std::uint8_t* filled = s.needs_filled.data() + static_cast<std::size_t>(ty) * nx;
+        for (int tx = 0; tx < nx; ++tx) filled[tx] |= row_filled[tx];
       }
     }
     report(progress, static_cast<double>(y0 + rows) / H);

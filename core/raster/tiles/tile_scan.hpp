@@ -10,6 +10,7 @@
 #include "raster/coarse_guide.hpp"
 #include "raster/tiles/tile_layout.hpp"
 #include "raster/void_components.hpp"
+#include "raster/void_selection.hpp"
 
 namespace mcmd::detail {
 
@@ -19,12 +20,16 @@ struct ScanResult {
   double lo = 0.0;  // known elevation range (lo > hi when no cell is known)
   double hi = -1.0;
   std::vector<std::uint8_t> needs;  // per tile, row-major: a void lies in its output region
+  // Likewise, a void cell that is not left (raster/void_selection.hpp);
+  // empty when no void is left.
+  std::vector<std::uint8_t> needs_filled;
 };
 
 // Read the raster in full-width row blocks of about a million cells, count
 // known and void cells, feed `guide` and `components` (either may be null),
 // mark the tiles to solve.
 ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, CoarseGuide* guide,
-                       const ProgressFn& progress, ComponentFinder* components = nullptr);
+                       const ProgressFn& progress, ComponentFinder* components = nullptr,
+                       const LeftVoids* left = nullptr);
 
 }  // namespace mcmd::detail

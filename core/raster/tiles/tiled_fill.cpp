@@ -37,12 +37,12 @@ struct PublishOnExit {
 }  // namespace
 
 void tiled_fill(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
-                const ProgressFn& progress, const RasterFillHooks& hooks) {
+                const ProgressFn& progress, const RasterFillHooks& hooks, const LeftVoids& left) {
   RasterFillStats stats;
   const PublishOnExit publish{hooks, stats};  // the counts reach the caller even when this throws
   report(progress, 0.0);
   TilePlan plan;
-  if (!plan_tiles(raster, params, tiling, sub_progress(progress, 0.0, 0.15), stats, plan)) {
+  if (!plan_tiles(raster, params, tiling, sub_progress(progress, 0.0, 0.15), stats, plan, left)) {
     report(progress, 1.0);
     return;
   }

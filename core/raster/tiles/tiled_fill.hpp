@@ -5,6 +5,7 @@
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
 #include "mcmd/raster_access.hpp"
+#include "raster/void_selection.hpp"
 
 namespace mcmd::detail {
 
@@ -13,7 +14,8 @@ namespace mcmd::detail {
 // are solved alone and the windows of the tiles with voids by a worker pool,
 // while the calling thread reads their input, blends results in row-major
 // tile order and writes what is final. Throws as fill_raster.
+// Windows holding only voids that `left` leaves unfilled are not solved.
 void tiled_fill(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
-                const ProgressFn& progress, const RasterFillHooks& hooks);
+                const ProgressFn& progress, const RasterFillHooks& hooks, const LeftVoids& left = {});
 
 }  // namespace mcmd::detail
