@@ -142,6 +142,7 @@ FLAGS = {
     '-method': ['mcmd', 'paper-ds', 'paper-te', 'PAPER_DS', 'kriging'],
     '-delta': ['normalized', 'paper', 'other'],
     '-b': ['1', '2', '3', '0', '9', '+1', 'x'],
+    '-maxvoid': ['0', '1', '5', '40', '5cells', '1e3', '2.5', '900m2', '1km2', '1ha', '3acres'],
 }
 
 
@@ -162,6 +163,8 @@ def random_options(rng):
                                         'COMPRESS=LERC', 'MAX_Z_ERROR=0.5', 'BAD', 'PREDICTOR=2']))]
     if rng.random() < 0.1:
         opts.append('-nomask')
+    if rng.random() < 0.15:
+        opts.append('-inner')
     return opts
 
 
@@ -197,7 +200,7 @@ def is_nan(v):
 
 
 def check_output(src_copy, dst, args):
-    """Exit 0: every valid cell kept; unless -md, -b or -nomask chose otherwise,
+    """Exit 0: every valid cell kept; unless -md, -b, -nomask, -inner or -maxvoid chose otherwise,
     every void filled, with neither the nodata value nor NaN."""
     try:
         src, out = gdal.Open(src_copy), gdal.Open(dst)
@@ -205,7 +208,7 @@ def check_output(src_copy, dst, args):
         return 'exit 0 but the output cannot be read: %s' % e
     if (src.RasterXSize, src.RasterYSize, src.RasterCount) != (out.RasterXSize, out.RasterYSize, out.RasterCount):
         return 'exit 0 but the output has another size or band count'
-    all_filled = not {'-md', '-b', '-nomask'} & set(args)
+    all_filled = not {'-md', '-b', '-nomask', '-inner', '-maxvoid'} & set(args)
     for b in range(1, src.RasterCount + 1):
         sb, ob = src.GetRasterBand(b), out.GetRasterBand(b)
         try:
