@@ -5,8 +5,6 @@ import os
 
 from qgis.core import (Qgis,
                        QgsMessageLog,
-                       QgsProcessing,
-                       QgsProcessingAlgorithm,
                        QgsProcessingException,
                        QgsProcessingParameterBand,
                        QgsProcessingParameterBoolean,
@@ -17,12 +15,10 @@ from qgis.core import (Qgis,
                        QgsProcessingParameterRasterLayer,
                        QgsProcessingParameterString,
                        QgsRasterFileWriter)
-from qgis.PyQt.QtCore import QCoreApplication, QUrl
-from qgis.PyQt.QtGui import QIcon
 
 from . import tool
+from .tool_algorithm import ToolAlgorithm
 
-PLUGIN_DIR = os.path.dirname(os.path.abspath(__file__))
 
 # (CLI value, label) in enum order; the first is the tool's default.
 METHODS = [
@@ -56,17 +52,16 @@ NUMBERS = [
     ('THREADS', '-threads', 'Number of threads (0 = the tool\'s default)', _INT, 0, 0, 1024, True),
 ]
 
-# The full help, shipped beside the plugin as an HTML page (also the help URL).
-HELP_FILE = tool.help_file('fillnodata')
-HELP = tool.read_help(HELP_FILE)
 
-SHORT_HELP = ('Fills nodata voids of a raster (DEM) with Morphologically Constrained Midpoint '
-              'Displacement by running the mcmd_fillnodata tool. Known cells are never changed. '
-              'RS 0 gives a smooth fill, RS auto or a number adds terrain-like roughness (H, rt, '
-              'seed); I and I_bu shape how elevations are interpolated into the void.')
+class FillNodataAlgorithm(ToolAlgorithm):
+    SHORT_HELP = ('Fills nodata voids of a raster (DEM) with Morphologically Constrained Midpoint '
+                  'Displacement by running the mcmd_fillnodata tool. Known cells are never changed. '
+                  'RS 0 gives a smooth fill, RS auto or a number adds terrain-like roughness (H, rt, '
+                  'seed); I and I_bu shape how elevations are interpolated into the void.')
+    # The full help, an HTML page shipped in the plugin (also the help URL).
+    HELP_FILE = tool.help_file('fillnodata')
+    HELP = tool.read_help(HELP_FILE)
 
-
-class FillNodataAlgorithm(QgsProcessingAlgorithm):
     INPUT = 'INPUT'
     BANDS = 'BANDS'
     MASK = 'MASK_LAYER'
@@ -80,9 +75,6 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
     CREATION_OPTIONS = 'OPTIONS'
     EXTRA = 'EXTRA'
     OUTPUT = 'OUTPUT'
-
-    def tr(self, string):
-        return QCoreApplication.translate('FillNodataAlgorithm', string)
 
     def createInstance(self):  # noqa: N802
         return FillNodataAlgorithm()
@@ -103,30 +95,8 @@ class FillNodataAlgorithm(QgsProcessingAlgorithm):
         return self.tr('dem,void,nodata,fill,interpolate,midpoint,displacement,fractal,'
                        'terrain,srtm,mcmd').split(',')
 
-    def icon(self):
-        return QIcon(os.path.join(PLUGIN_DIR, 'icon.svg'))
-
-    def svgIconPath(self):  # noqa: N802
-        return os.path.join(PLUGIN_DIR, 'icon.svg')
-
-    def shortHelpString(self):  # noqa: N802
-        # The whole help: QGIS 3.22 shows only this one, in the dialog's panel and in
-        # qgis_process help (helpString() is shown nowhere).
-        return self.tr(SHORT_HELP) + self.tr(HELP)
-
-    def helpString(self):  # noqa: N802
-        return self.tr(HELP)
-
-    def helpUrl(self):  # noqa: N802
-        # The help page shipped with the plugin: the dialog's Help button opens it.
-        return QUrl.fromLocalFile(HELP_FILE).toString()
-
     def shortDescription(self):  # noqa: N802
         return self.tr('Fills raster nodata voids with MCMD (mcmd_fillnodata).')
-
-    def flags(self):
-        # The tool runs in its own process; nothing here touches the GUI or layers.
-        return super().flags() | QgsProcessingAlgorithm.FlagDisplayNameIsLiteral
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.addParameter(QgsProcessingParameterRasterLayer(

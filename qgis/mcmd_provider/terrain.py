@@ -13,7 +13,6 @@ import sys
 from qgis.core import (Qgis,
                        QgsMessageLog,
                        QgsProcessing,
-                       QgsProcessingAlgorithm,
                        QgsProcessingException,
                        QgsProcessingParameterCrs,
                        QgsProcessingParameterDefinition,
@@ -26,12 +25,10 @@ from qgis.core import (Qgis,
                        QgsProcessingParameterString,
                        QgsProcessingParameterVectorLayer,
                        QgsRasterFileWriter)
-from qgis.PyQt.QtCore import QCoreApplication, QUrl
-from qgis.PyQt.QtGui import QIcon
 
 from . import tool
+from .tool_algorithm import ToolAlgorithm
 
-PLUGIN_DIR = os.path.dirname(os.path.abspath(__file__))
 TERRAIN_TOOL = 'mcmd_terrain'
 
 # (CLI arguments, label); the first is the tool's default.
@@ -71,10 +68,6 @@ STRINGS = [
     ('UNKNOWN', '-unknown', 'Sketch cells to synthesise (white, black, none or a value)', True),
 ]
 
-# The full help, shipped beside the plugin as an HTML page (also the help URL).
-HELP_FILE = tool.help_file('terrain')
-HELP = tool.read_help(HELP_FILE)
-
 
 def find_terrain_executable():
     """mcmd_terrain beside the configured mcmd_fillnodata, else on PATH; ToolError if neither."""
@@ -101,7 +94,13 @@ def file_of(layer, what):
     return path
 
 
-class TerrainAlgorithm(QgsProcessingAlgorithm):
+class TerrainAlgorithm(ToolAlgorithm):
+    SHORT_HELP = ('Makes a terrain from scratch, around a sketch, ridge and river lines or a generated '
+                  'skeleton, by running the mcmd_terrain tool.')
+    # The full help, an HTML page shipped in the plugin (also the help URL).
+    HELP_FILE = tool.help_file('terrain')
+    HELP = tool.read_help(HELP_FILE)
+
     SKETCH = 'SKETCH'
     STATES = 'STATES'
     RIDGES = 'RIDGES'
@@ -117,9 +116,6 @@ class TerrainAlgorithm(QgsProcessingAlgorithm):
     EXTRA = 'EXTRA'
     HILLSHADE = 'HILLSHADE'
     OUTPUT = 'OUTPUT'
-
-    def tr(self, string):
-        return QCoreApplication.translate('TerrainAlgorithm', string)
 
     def createInstance(self):  # noqa: N802
         return TerrainAlgorithm()
@@ -138,27 +134,6 @@ class TerrainAlgorithm(QgsProcessingAlgorithm):
 
     def tags(self):
         return self.tr('terrain,dem,sketch,ridge,river,skeleton,fractal,midpoint,synthesis,mcmd').split(',')
-
-    def icon(self):
-        return QIcon(os.path.join(PLUGIN_DIR, 'icon.svg'))
-
-    def svgIconPath(self):  # noqa: N802
-        return os.path.join(PLUGIN_DIR, 'icon.svg')
-
-    def shortHelpString(self):  # noqa: N802
-        # The whole help: QGIS 3.22 shows only this one (dialog panel, qgis_process help).
-        return self.tr('Makes a terrain from scratch, around a sketch, ridge and river lines or a generated '
-                       'skeleton, by running the mcmd_terrain tool.') + self.tr(HELP)
-
-    def helpString(self):  # noqa: N802
-        return self.tr(HELP)
-
-    def helpUrl(self):  # noqa: N802
-        # The help page shipped with the plugin: the dialog's Help button opens it.
-        return QUrl.fromLocalFile(HELP_FILE).toString()
-
-    def flags(self):
-        return super().flags() | QgsProcessingAlgorithm.FlagDisplayNameIsLiteral
 
     def _add(self, param, advanced=False):
         if advanced:

@@ -1,0 +1,42 @@
+"""What both Processing algorithms share: each runs a tool of the plugin, shows
+the plugin's icon, and has a help page (help/<name>.html) shown in the
+dialog's panel and behind its Help button."""
+
+import os
+
+from qgis.core import QgsProcessingAlgorithm
+from qgis.PyQt.QtCore import QCoreApplication, QUrl
+from qgis.PyQt.QtGui import QIcon
+
+ICON = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'icon.svg')
+
+
+class ToolAlgorithm(QgsProcessingAlgorithm):
+    SHORT_HELP = ''  # the help panel's first sentences
+    HELP_FILE = ''   # tool.help_file(name)
+    HELP = ''        # tool.read_help(HELP_FILE)
+
+    def tr(self, string):
+        return QCoreApplication.translate(type(self).__name__, string)
+
+    def icon(self):
+        return QIcon(ICON)
+
+    def svgIconPath(self):  # noqa: N802
+        return ICON
+
+    def shortHelpString(self):  # noqa: N802
+        # The whole help: QGIS 3.22 shows only this one, in the dialog's panel and in
+        # qgis_process help (helpString() is shown nowhere).
+        return self.tr(self.SHORT_HELP) + self.tr(self.HELP)
+
+    def helpString(self):  # noqa: N802
+        return self.tr(self.HELP)
+
+    def helpUrl(self):  # noqa: N802
+        # The help page shipped with the plugin: the dialog's Help button opens it.
+        return QUrl.fromLocalFile(self.HELP_FILE).toString()
+
+    def flags(self):
+        # The tool runs in its own process; nothing here touches the GUI or layers.
+        return super().flags() | QgsProcessingAlgorithm.FlagDisplayNameIsLiteral
