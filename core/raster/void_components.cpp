@@ -15,6 +15,48 @@ std::vector<std::uint8_t> run_mask(const std::vector<VoidRun>& runs, int x0, int
   return mask;
 }
 
+std::size_t cell_count(const std::vector<VoidRun>& runs) {
+  std::size_t n = 0;
+  for (const VoidRun& r : runs) n += static_cast<std::size_t>(r.x1 - r.x0);
+  return n;
+}
+
+RunsByRow::RunsByRow(std::vector<VoidRun> runs, int height) : runs_(std::move(runs)) {
+  std::sort(runs_.begin(), runs_.end(),
+            [](const VoidRun& a, const VoidRun& b) { return a.y != b.y ? a.y < b.y : a.x0 < b.x0; });
+  row_start_.assign(static_cast<std::size_t>(height) + 1, 0);
+  for (const VoidRun& r : runs_) {
+    ++row_start_[static_cast<std::size_t>(r.y) + 1];
+    cells_ += static_cast<std::size_t>(r.x1 - r.x0);
+  }
+  for (std::size_t y = 0; y + 1 < row_start_.size(); ++y) row_start_[y + 1] += row_start_[y];
+}
+
+void RunsByRow::clear(int x0, int y0, int w, int h, std::uint8_t* mask) const {
+  if (runs_.empty()) return;
+  for (int y = y0; y < y0 + h; ++y)
+    for (std::size_t k = row_start_[y]; k < row_start_[y + 1]; ++k) {
+      const int b = std::max(runs_[k].x0, x0), e = std::min(runs_[k].x1, x0 + w);
+      std::uint8_t* row = mask + static_cast<std::size_t>(y - y0) * w;
+      if (b < e) std::fill(row + (b - x0), row + (e - x0), 0);
+    }
+}
+
+std::size_t RunsByRow::count(const std::vector<VoidRun>& runs) const {
+  std::size_t n = 0;
+  for (const VoidRun& r : runs)
+    for (std::size_t k = row_start_[r.y]; k < row_start_[r.y + 1]; ++k) {
+      const int b = std::max(runs_[k].x0, r.x0), e = std::min(runs_[k].x1, r.x1);
+      if (b < e) n += static_cast<std::size_t>(e - b);
+    }
+  return n;
+}
+
+void RunsByRow::mark_row(int y, std::uint8_t* row) const {
+  if (runs_.empty()) return;
+  for (std::size_t k = row_start_[y]; k < row_start_[y + 1]; ++k) std::fill(row + runs_[k].x0, row + runs_[k].x1, 1);
+}
+
 ComponentFinder::ComponentFinder(int width, int max_extent, std::size_t max_runs)
     : width_(width), max_extent_(max_extent), max_runs_(max_runs) {}
 

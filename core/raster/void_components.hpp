@@ -34,6 +34,29 @@ struct Box {  // inclusive bounds
 // where one of `runs` covers it. Pre: the runs lie inside the rectangle.
 std::vector<std::uint8_t> run_mask(const std::vector<VoidRun>& runs, int x0, int y0, int w, int h);
 
+// The number of cells of `runs`.
+std::size_t cell_count(const std::vector<VoidRun>& runs);
+
+// Void runs indexed by row: which cells of a rectangle or a row they cover.
+class RunsByRow {
+ public:
+  RunsByRow() = default;
+  RunsByRow(std::vector<VoidRun> runs, int height);  // runs in any order, rows < height
+  bool empty() const { return runs_.empty(); }
+  std::size_t cells() const { return cells_; }
+  // Clears mask[] (a w×h rectangle at (x0, y0), row-major) on the runs' cells.
+  void clear(int x0, int y0, int w, int h, std::uint8_t* mask) const;
+  // The number of cells of `runs` that these runs cover.
+  std::size_t count(const std::vector<VoidRun>& runs) const;
+  // Sets row[x] = 1 on the runs' cells of row y (row: the raster's width).
+  void mark_row(int y, std::uint8_t* row) const;
+
+ private:
+  std::vector<VoidRun> runs_;           // sorted by (y, x0)
+  std::vector<std::size_t> row_start_;  // runs_ of row y: [row_start_[y], row_start_[y+1])
+  std::size_t cells_ = 0;
+};
+
 struct SmallComponent {
   Box box;
   std::vector<VoidRun> runs;  // row-major order

@@ -134,9 +134,7 @@ VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& ru
     }
   }
   const std::vector<std::uint8_t> own = run_mask(runs, rect.x0, rect.y0, w, h);  // the component's cells
-  std::size_t own_count = 0;
-  for (const VoidRun& run : runs) own_count += run.x1 - run.x0;
-  pin_other_voids(rect, own, own_count, pins, z, state);
+  pin_other_voids(rect, own, cell_count(runs), pins, z, state);
   FieldView view{w, h, z.data(), state.data()};
   view.wanted = own.data();  // the roughness is made around these only
   if (!need_dist) {

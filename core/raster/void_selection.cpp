@@ -5,39 +5,6 @@
 
 namespace mcmd::detail {
 
-LeftVoids::LeftVoids(std::vector<VoidRun> runs, int height) : runs_(std::move(runs)) {
-  row_start_.assign(static_cast<std::size_t>(height) + 1, 0);
-  for (const VoidRun& r : runs_) {
-    ++row_start_[static_cast<std::size_t>(r.y) + 1];
-    cells_ += static_cast<std::size_t>(r.x1 - r.x0);
-  }
-  for (std::size_t y = 0; y + 1 < row_start_.size(); ++y) row_start_[y + 1] += row_start_[y];
-}
-
-void LeftVoids::clear(int x0, int y0, int w, int h, std::uint8_t* mask) const {
-  if (runs_.empty()) return;
-  for (int y = y0; y < y0 + h; ++y)
-    for (std::size_t k = row_start_[y]; k < row_start_[y + 1]; ++k) {
-      const int b = std::max(runs_[k].x0, x0), e = std::min(runs_[k].x1, x0 + w);
-      if (b < e) std::fill(mask + static_cast<std::size_t>(y - y0) * w + (b - x0), mask + static_cast<std::size_t>(y - y0) * w + (e - x0), 0);
-    }
-}
-
-std::size_t LeftVoids::count(const std::vector<VoidRun>& runs) const {
-  std::size_t n = 0;
-  for (const VoidRun& r : runs)
-    for (std::size_t k = row_start_[r.y]; k < row_start_[r.y + 1]; ++k) {
-      const int b = std::max(runs_[k].x0, r.x0), e = std::min(runs_[k].x1, r.x1);
-      if (b < e) n += static_cast<std::size_t>(e - b);
-    }
-  return n;
-}
-
-void LeftVoids::mark_row(int y, std::uint8_t* row) const {
-  if (runs_.empty()) return;
-  for (std::size_t k = row_start_[y]; k < row_start_[y + 1]; ++k) std::fill(row + runs_[k].x0, row + runs_[k].x1, 1);
-}
-
 VoidSelector::VoidSelector(int width, int height, const TilingParams& tiling)
     : width_(width), height_(height), inner_only_(tiling.inner_only), max_cells_(tiling.max_void_cells) {}
 

@@ -18,25 +18,8 @@ namespace mcmd::detail {
 // Whether `tiling` asks to leave some voids unfilled.
 inline bool selects_voids(const TilingParams& tiling) { return tiling.inner_only || tiling.max_void_cells > 0; }
 
-// The cells of the voids left unfilled, as runs indexed by row.
-class LeftVoids {
- public:
-  LeftVoids() = default;
-  LeftVoids(std::vector<VoidRun> runs, int height);  // runs sorted by (y, x0)
-  bool empty() const { return runs_.empty(); }
-  std::size_t cells() const { return cells_; }
-  // Clears mask[] (a w×h rectangle at (x0, y0), row-major) on left cells.
-  void clear(int x0, int y0, int w, int h, std::uint8_t* mask) const;
-  // The number of cells of `runs` that are left.
-  std::size_t count(const std::vector<VoidRun>& runs) const;
-  // Sets row[x] = 1 on the left cells of row y (row: the raster's width).
-  void mark_row(int y, std::uint8_t* row) const;
-
- private:
-  std::vector<VoidRun> runs_;
-  std::vector<std::size_t> row_start_;  // runs_ of row y: [row_start_[y], row_start_[y+1])
-  std::size_t cells_ = 0;
-};
+// The cells of the voids left unfilled.
+using LeftVoids = RunsByRow;
 
 // Streaming 8-connected labelling of the void cells. Memory: one record per
 // void run of the raster (a few bytes per run).

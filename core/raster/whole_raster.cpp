@@ -43,12 +43,6 @@ struct Domain {
 
 using DomainResult = VoidFieldResult;
 
-std::size_t cell_count(const std::vector<VoidRun>& runs) {
-  std::size_t n = 0;
-  for (const VoidRun& run : runs) n += static_cast<std::size_t>(run.x1 - run.x0);
-  return n;
-}
-
 // The void components to solve: those with a cell that is not `left`.
 std::vector<Domain> find_domains(const Whole& r, const LeftVoids& left) {
   ComponentFinder finder(r.w, std::max(r.w, r.h), std::size_t{1} << 40);

@@ -96,7 +96,8 @@ JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job&
   } else {
     r.window =
         solve_window(plan.layout, in.window, plan.guide_or_null(), plan.params, max_distance, progress, plan.lines);
-    plan.small_runs.mask(r.window);
+    WindowResult& w = r.window;
+    plan.small_runs.clear(w.xs.begin, w.ys.begin, w.xs.size(), w.ys.size(), w.write.data());
   }
   return r;
 }

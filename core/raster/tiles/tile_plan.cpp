@@ -11,25 +11,6 @@
 
 namespace mcmd::detail {
 
-void RunIndex::build(const std::vector<SmallComponent>& small, int height) {
-  for (const auto& c : small) runs_.insert(runs_.end(), c.runs.begin(), c.runs.end());
-  std::sort(runs_.begin(), runs_.end(),
-            [](const VoidRun& a, const VoidRun& b) { return a.y != b.y ? a.y < b.y : a.x0 < b.x0; });
-  row_start_.assign(static_cast<std::size_t>(height) + 1, 0);
-  for (const auto& r : runs_) ++row_start_[static_cast<std::size_t>(r.y) + 1];
-  for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) row_start_[y + 1] += row_start_[y];
-}
-
-void RunIndex::mask(WindowResult& r) const {
-  if (runs_.empty()) return;
-  const int rw = r.xs.size();
-  for (int y = r.ys.begin; y < r.ys.end; ++y)
-    for (std::size_t k = row_start_[y]; k < row_start_[y + 1]; ++k) {
-      const int b = std::max(runs_[k].x0, r.xs.begin), e = std::min(runs_[k].x1, r.xs.end);
-      for (int x = b; x < e; ++x) r.write[static_cast<std::size_t>(y - r.ys.begin) * rw + (x - r.xs.begin)] = 0;
-    }
-}
-
 namespace {
 
 // Only tiles whose output region meets a large component's box need a window.
@@ -53,11 +34,7 @@ void needs_of_large(const TileLayout& layout, const std::vector<Box>& large, std
 void skip_left_voids(const LeftVoids& left, ScanResult& scan, std::vector<SmallComponent>& small) {
   if (left.empty()) return;
   for (std::size_t t = 0; t < scan.needs.size(); ++t) scan.needs[t] &= scan.needs_filled[t];
-  std::erase_if(small, [&left](const SmallComponent& c) {
-    std::size_t cells = 0;
-    for (const VoidRun& r : c.runs) cells += static_cast<std::size_t>(r.x1 - r.x0);
-    return left.count(c.runs) == cells;
-  });
+  std::erase_if(small, [&left](const SmallComponent& c) { return left.count(c.runs) == cell_count(c.runs); });
 }
 
 }  // namespace
@@ -106,7 +83,9 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
   const bool guided = !plan.single && plan.guide.ready();
   if (finder && guided) {
     plan.small = std::move(finder->small());
-    plan.small_runs.build(plan.small, raster.height);
+    std::vector<VoidRun> runs;
+    for (const SmallComponent& c : plan.small) runs.insert(runs.end(), c.runs.begin(), c.runs.end());
+    plan.small_runs = RunsByRow(std::move(runs), raster.height);
     needs_of_large(layout, finder->large(), scan.needs);
   }
   skip_left_voids(left, scan, plan.small);

@@ -24,18 +24,6 @@ struct Job {
   std::size_t index = 0;  // into TilePlan::small, or a tile (row-major)
 };
 
-// The runs of the small components, by row, to keep windows off their cells.
-class RunIndex {
- public:
-  void build(const std::vector<SmallComponent>& small, int height);
-  // Clear the write flags of a window result on small components' cells.
-  void mask(WindowResult& r) const;
-
- private:
-  std::vector<VoidRun> runs_;            // sorted by (y, x0)
-  std::vector<std::size_t> row_start_;   // height + 1
-};
-
 struct TilePlan {
   TileLayout layout;
   bool single = false;  // one tile: its window holds the whole raster, no guide
@@ -43,7 +31,7 @@ struct TilePlan {
   FillParams params;    // the caller's, with the raster's noise unit
   double radius = 0.0;  // guide radius (tile_window.hpp); 0 without a guide
   std::vector<SmallComponent> small;  // solved alone (lone_void.hpp)
-  RunIndex small_runs;
+  RunsByRow small_runs;  // their cells, kept off the windows' writes
   std::vector<morph::LineCell> lines;  // the raster's line cells in voids (morphology/lines.hpp)
   std::vector<Job> jobs;  // the small components in order of their first cell, then tiles row-major
   const CoarseGuide* guide_or_null() const { return single ? nullptr : &guide; }
