@@ -7,6 +7,7 @@
 
 #include "common/distance.hpp"
 #include "mcmd/fill_raster.hpp"
+#include "raster/strips.hpp"
 
 namespace mcmd {
 
@@ -21,8 +22,7 @@ struct Survey {
   double lo = 0, hi = 0;            // the known elevations' range
   std::size_t known = 0;
   std::size_t voids_without_s = 0;  // void cells the second DEM has no value for
-  double sums[kLagCount][5] = {};   // per lag: n, Σa, Σb, Σa², Σb², and Σab below
-  double cross[kLagCount] = {};
+  double sums[kLagCount][6] = {};   // per lag: n, Σa, Σb, Σa², Σb², Σab
 
   void add_row(const double* z, const std::uint8_t* valid, const double* s, int w, bool sample) {
     for (int x = 0; x < w; ++x) {
@@ -41,8 +41,7 @@ struct Survey {
         if (!valid[x] || !valid[y] || std::isnan(s[x]) || std::isnan(s[y])) continue;
         const double a = z[x] - s[x], b = z[y] - s[y];
         double* t = sums[k];
-        t[0] += 1, t[1] += a, t[2] += b, t[3] += a * a, t[4] += b * b;
-        cross[k] += a * b;
+        t[0] += 1, t[1] += a, t[2] += b, t[3] += a * a, t[4] += b * b, t[5] += a * b;
       }
   }
 
@@ -53,7 +52,7 @@ struct Survey {
     for (int k = 0; k < kLagCount; ++k) {
       const double* t = sums[k];
       if (t[0] < 16) return 1.0;
-      const double cov = cross[k] / t[0] - (t[1] / t[0]) * (t[2] / t[0]);
+      const double cov = t[5] / t[0] - (t[1] / t[0]) * (t[2] / t[0]);
       const double va = t[3] / t[0] - (t[1] / t[0]) * (t[1] / t[0]);
       const double vb = t[4] / t[0] - (t[2] / t[0]) * (t[2] / t[0]);
       if (va <= 0 || vb <= 0) return 1.0;
@@ -68,18 +67,16 @@ struct Survey {
 
 Survey survey(const RasterAccess& raster, const Background& second) {
   Survey out;
-  const int w = raster.width, rows = std::clamp((1 << 20) / w, 1, raster.height);
-  std::vector<double> z(static_cast<std::size_t>(w) * rows), s(z.size());
-  std::vector<std::uint8_t> valid(z.size());
-  for (int y = 0; y < raster.height; y += rows) {
-    const int h = std::min(rows, raster.height - y);
-    raster.read(0, y, w, h, z.data(), valid.data());
-    second.read(0, y, w, h, s.data());
-    for (int r = 0; r < h; ++r) {
+  const int w = raster.width;
+  std::vector<double> s;
+  detail::for_each_strip(raster, [&](int y0, int rows, const double* z, const std::uint8_t* valid) {
+    s.resize(static_cast<std::size_t>(w) * rows);
+    second.read(0, y0, w, rows, s.data());
+    for (int r = 0; r < rows; ++r) {
       const std::size_t at = static_cast<std::size_t>(r) * w;
-      out.add_row(z.data() + at, valid.data() + at, s.data() + at, w, (y + r) % 4 == 0);
+      out.add_row(z + at, valid + at, s.data() + at, w, (y0 + r) % 4 == 0);
     }
-  }
+  });
   return out;
 }
 

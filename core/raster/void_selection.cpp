@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "raster/strips.hpp"
+
 namespace mcmd::detail {
 
 VoidSelector::VoidSelector(int width, int height, const TilingParams& tiling)
@@ -59,14 +61,9 @@ LeftVoids VoidSelector::finish() {
 
 LeftVoids find_left_voids(const RasterAccess& raster, const TilingParams& tiling) {
   VoidSelector selector(raster.width, raster.height, tiling);
-  const int rows = std::clamp((1 << 20) / raster.width, 1, raster.height);  // strips of about a million cells
-  std::vector<double> z(static_cast<std::size_t>(raster.width) * rows);
-  std::vector<std::uint8_t> valid(z.size());
-  for (int y = 0; y < raster.height; y += rows) {
-    const int h = std::min(rows, raster.height - y);
-    raster.read(0, y, raster.width, h, z.data(), valid.data());
-    for (int r = 0; r < h; ++r) selector.add_row(y + r, valid.data() + static_cast<std::size_t>(r) * raster.width);
-  }
+  for_each_strip(raster, [&](int y0, int rows, const double*, const std::uint8_t* valid) {
+    for (int r = 0; r < rows; ++r) selector.add_row(y0 + r, valid + static_cast<std::size_t>(r) * raster.width);
+  });
   return selector.finish();
 }
 

@@ -4,6 +4,8 @@
 #include <array>
 #include <limits>
 
+#include "raster/strips.hpp"
+
 namespace mcmd::detail {
 
 namespace {
@@ -24,9 +26,6 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
                        const ProgressFn& progress, ComponentFinder* components, const LeftVoids* left) {
   const int W = raster.width, H = raster.height;
   const int nx = layout.x.count();
-  const int chunk = std::clamp((1 << 20) / W, 1, H);
-  std::vector<double> z(static_cast<std::size_t>(W) * chunk);
-  std::vector<std::uint8_t> valid(z.size());
   const auto cx = covering_tiles(layout.x);
   const auto cy = covering_tiles(layout.y);
 
@@ -38,13 +37,11 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
   if (selecting) s.needs_filled.assign(layout.tile_count(), 0);
   std::vector<std::uint8_t> row_void(static_cast<std::size_t>(nx)), row_filled(row_void.size());
   std::vector<std::uint8_t> left_row(selecting ? static_cast<std::size_t>(W) : 0);
-  for (int y0 = 0; y0 < H; y0 += chunk) {
-    const int rows = std::min(chunk, H - y0);
-    raster.read(0, y0, W, rows, z.data(), valid.data());
-    if (guide) guide->add_rows(y0, rows, z.data(), valid.data());
+  for_each_strip(raster, [&](int y0, int rows, const double* z, const std::uint8_t* valid) {
+    if (guide) guide->add_rows(y0, rows, z, valid);
     for (int r = 0; r < rows; ++r) {
-      const double* zr = z.data() + static_cast<std::size_t>(r) * W;
-      const std::uint8_t* vr = valid.data() + static_cast<std::size_t>(r) * W;
+      const double* zr = z + static_cast<std::size_t>(r) * W;
+      const std::uint8_t* vr = valid + static_cast<std::size_t>(r) * W;
       std::fill(row_void.begin(), row_void.end(), 0);
       std::fill(row_filled.begin(), row_filled.end(), 0);
       if (selecting) {
@@ -80,7 +77,7 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
       }
     }
     report(progress, static_cast<double>(y0 + rows) / H);
-  }
+  });
   return s;
 }
 
