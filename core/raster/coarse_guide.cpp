@@ -32,49 +32,93 @@ CoarseGuide::CoarseGuide(int width, int height, int stride)
   moments_.assign(static_cast<std::size_t>(cw_) * ch_, Moments{});
 }
 
-void CoarseGuide::add_rows(int y0, int rows, const double* z, const std::uint8_t* valid) {
-  const int half = stride_ / 2;
-  // Lattice index of the block holding raster coordinate v: floor((v + S/2) / S).
-  auto lattice_of = [&](int v) { return (v + half) / stride_; };
-  for (int r = 0; r < rows; ++r) {
-    const int j = lattice_of(y0 + r);
-    if (j >= ch_) continue;  // past the last lattice row's block
-    Moments* mrow = moments_.data() + static_cast<std::size_t>(j) * cw_;
-    const double dy = static_cast<double>(y0 + r) - static_cast<double>(j) * stride_;
-    const double* zr = z + static_cast<std::size_t>(r) * width_;
-    const std::uint8_t* vr = valid + static_cast<std::size_t>(r) * width_;
-    // Block by block, the block's sums held in locals: the same additions in
-    // the same order as cell by cell into memory, without a store and reload
-    // between the cells of a block (a 1201² raster: 9 → 4 ms). Offsets are
-    // integers, so the count and the coordinate moments are summed exactly
-    // as integers (in any order: the same doubles); only the elevation sums
-    // are floating point, in raster order.
-    const long long iy = y0 + r - static_cast<long long>(j) * stride_;
-    for (int i = 0; i < cw_; ++i) {
-      const int xa = std::max(0, i * stride_ - half), xb = std::min(width_, i * stride_ - half + stride_);
-      if (xa >= xb) break;
-      Moments m = mrow[i];
-      long long n = 0, sx = 0, sxx = 0;
-      for (int x = xa; x < xb; ++x) {
-        if (!vr[x]) continue;
-        const long long ix = x - static_cast<long long>(i) * stride_;
-        const double dx = static_cast<double>(ix), zv = zr[x];
-        n += 1;
-        sx += ix;
-        sxx += ix * ix;
-        m.z += zv;
-        m.zx += zv * dx;
-        m.zy += zv * dy;
-      }
-      m.n += static_cast<double>(n);
-      m.x += static_cast<double>(sx);
-      m.y += static_cast<double>(n * iy);
-      m.xx += static_cast<double>(sxx);
-      m.yy += static_cast<double>(n * iy * iy);
-      m.xy += static_cast<double>(sx * iy);
-      mrow[i] = m;
+namespace {
+
+// Adds raster row y's known cells to the blocks of lattice points [i0, i1) of
+// lattice row j: `mrow` holds those points' moments, zr/vr the row's cells
+// from raster column xoff on. Block by block, the block's sums held in
+// locals: the same additions in the same order as cell by cell into memory,
+// without a store and reload between the cells of a block (a 1201² raster:
+// 9 → 4 ms). Offsets are integers, so the count and the coordinate moments
+// are summed exactly as integers (in any order: the same doubles); only the
+// elevation sums are floating point, in raster order.
+void add_row_to_blocks(CoarseGuide::Moments* mrow, int i0, int i1, int stride, int width, int y, int j,
+                       const double* zr, const std::uint8_t* vr, int xoff) {
+  const int half = stride / 2;
+  const double dy = static_cast<double>(y) - static_cast<double>(j) * stride;
+  const long long iy = y - static_cast<long long>(j) * stride;
+  for (int i = i0; i < i1; ++i) {
+    const int xa = std::max(0, i * stride - half), xb = std::min(width, i * stride - half + stride);
+    if (xa >= xb) break;
+    CoarseGuide::Moments m = mrow[i - i0];
+    long long n = 0, sx = 0, sxx = 0;
+    for (int x = xa; x < xb; ++x) {
+      if (!vr[x - xoff]) continue;
+      const long long ix = x - static_cast<long long>(i) * stride;
+      const double dx = static_cast<double>(ix), zv = zr[x - xoff];
+      n += 1;
+      sx += ix;
+      sxx += ix * ix;
+      m.z += zv;
+      m.zx += zv * dx;
+      m.zy += zv * dy;
     }
+    m.n += static_cast<double>(n);
+    m.x += static_cast<double>(sx);
+    m.y += static_cast<double>(n * iy);
+    m.xx += static_cast<double>(sxx);
+    m.yy += static_cast<double>(n * iy * iy);
+    m.xy += static_cast<double>(sx * iy);
+    mrow[i - i0] = m;
   }
+}
+
+// Lattice index of the block holding raster coordinate v: floor((v + S/2) / S).
+int lattice_of(int v, int stride) { return (v + stride / 2) / stride; }
+
+}  // namespace
+
+void CoarseGuide::add_rows(int y0, int rows, const double* z, const std::uint8_t* valid) {
+  for (int r = 0; r < rows; ++r) {
+    const int j = lattice_of(y0 + r, stride_);
+    if (j >= ch_) continue;  // past the last lattice row's block
+    add_row_to_blocks(moments_.data() + static_cast<std::size_t>(j) * cw_, 0, cw_, stride_, width_, y0 + r, j,
+                      z + static_cast<std::size_t>(r) * width_, valid + static_cast<std::size_t>(r) * width_, 0);
+  }
+}
+
+Range CoarseGuide::lattice_points(int length, int stride, int begin, int end) {
+  const int count = (length - 1 + stride - 1) / stride + 1;
+  // The last point may lie past the raster's last cell: the part that ends the axis holds it.
+  const int last = end >= length ? count : std::min(count, (end + stride - 1) / stride);
+  return Range{std::min(count, (begin + stride - 1) / stride), last};
+}
+
+std::vector<CoarseGuide::Moments> CoarseGuide::part_moments(int width, int height, int stride, Range is, Range js,
+                                                            const CellBlock& cells) {
+  std::vector<Moments> part(static_cast<std::size_t>(is.size()) * js.size());
+  if (part.empty()) return part;
+  const int half = stride / 2;
+  const int ya = std::max(0, js.begin * stride - half), yb = std::min(height, (js.end - 1) * stride - half + stride);
+  const int xa = std::max(0, is.begin * stride - half), xb = std::min(width, (is.end - 1) * stride - half + stride);
+  if (xa < cells.x0 || ya < cells.y0 || xb > cells.x0 + cells.w || yb > cells.y0 + cells.h)
+    throw std::invalid_argument("part_moments: the cells do not hold the lattice points' blocks");
+  for (int y = ya; y < yb; ++y) {
+    const int j = lattice_of(y, stride);
+    const std::size_t row = static_cast<std::size_t>(y - cells.y0) * cells.w;
+    add_row_to_blocks(part.data() + static_cast<std::size_t>(j - js.begin) * is.size(), is.begin, is.end, stride,
+                      width, y, j, cells.z + row, cells.valid + row, cells.x0);
+  }
+  return part;
+}
+
+void CoarseGuide::set_moments(Range is, Range js, const std::vector<Moments>& part) {
+  if (is.begin < 0 || js.begin < 0 || is.end > cw_ || js.end > ch_ ||
+      part.size() != static_cast<std::size_t>(is.size()) * js.size())
+    throw std::invalid_argument("set_moments: the part does not fit the lattice");
+  for (int j = js.begin; j < js.end; ++j)
+    std::copy_n(part.data() + static_cast<std::size_t>(j - js.begin) * is.size(), is.size(),
+                moments_.data() + static_cast<std::size_t>(j) * cw_ + is.begin);
 }
 
 namespace {

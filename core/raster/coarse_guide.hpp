@@ -21,6 +21,7 @@
 #include "common/grid.hpp"
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
+#include "raster/tiles/tile_layout.hpp"
 
 namespace mcmd {
 
@@ -50,6 +51,27 @@ class CoarseGuide {
   // Accumulate raster rows [y0, y0 + rows), full width, row-major
   // (valid[i] != 0: known). Rows may come in any order, each once.
   void add_rows(int y0, int rows, const double* z, const std::uint8_t* valid);
+
+  // Sums of a block's known cells, offsets from its lattice point.
+  struct Moments {
+    double n = 0, z = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0, zx = 0, zy = 0;
+  };
+  // A rectangle of raster cells, row-major (valid[i] != 0: known).
+  struct CellBlock {
+    int x0 = 0, y0 = 0, w = 0, h = 0;
+    const double* z = nullptr;
+    const std::uint8_t* valid = nullptr;
+  };
+
+  // The guide built in parts (a fill split over workers, mcmd/chunked_fill.hpp):
+  // the lattice points whose raster coordinate i·S lies in [begin, end) along
+  // an axis of `length` cells; the moments of lattice points is × js from
+  // cells that hold all of their blocks' cells (else std::invalid_argument),
+  // row-major, summed exactly as add_rows sums them; and set into the guide.
+  static Range lattice_points(int length, int stride, int begin, int end);
+  static std::vector<Moments> part_moments(int width, int height, int stride, Range is, Range js,
+                                           const CellBlock& cells);
+  void set_moments(Range is, Range js, const std::vector<Moments>& part);
 
   // Fill the lattice (same method as the windows). Returns false, and stays
   // unusable, when no lattice point is known. Throws Cancelled. With
@@ -88,9 +110,6 @@ class CoarseGuide {
   // points; 0 at known points), distances measured on the lattice.
   std::vector<double> far_void_weights() const;
   int width_ = 1, height_ = 1, stride_ = 1, cw_ = 1, ch_ = 1;
-  struct Moments {  // of the known cells of a block, offsets from the lattice point
-    double n = 0, z = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0, zx = 0, zy = 0;
-  };
   std::vector<Moments> moments_;
   std::vector<double> value_;        // cw × ch after solve
   std::vector<std::uint8_t> known_;  // lattice points whose block holds a known cell

@@ -6,7 +6,11 @@
 
 namespace mcmd {
 
-Blender::Blender(const TileLayout& layout, BlockWriter write) : layout_(layout), write_(std::move(write)) {}
+Blender::Blender(const TileLayout& layout, BlockWriter write)
+    : Blender(layout, std::move(write), Range{0, layout.x.length()}) {}
+
+Blender::Blender(const TileLayout& layout, BlockWriter write, Range cols)
+    : layout_(layout), write_(std::move(write)), cols_{std::max(0, cols.begin), std::min(layout.x.length(), cols.end)} {}
 
 Blender::Strip& Blender::strip_for(int seam) {
   for (Strip* s : {&top_, &bottom_})
@@ -15,7 +19,7 @@ Blender::Strip& Blender::strip_for(int seam) {
   if (s.seam >= 0) throw std::logic_error("Blender: results out of tile-row order");
   s.seam = seam;
   s.rows = layout_.y.seam_band(seam);
-  const std::size_t cells = static_cast<std::size_t>(s.rows.size()) * layout_.x.length();
+  const std::size_t cells = static_cast<std::size_t>(s.rows.size()) * cols_.size();
   s.z.assign(cells, 0.0);
   s.mask.assign(cells, 0);
   return s;
@@ -27,8 +31,9 @@ void Blender::add_to_strip(const WindowResult& r, int seam) {
   const Range rows = s.rows;
   const TileAxis& ax = layout_.x;
   const TileAxis& ay = layout_.y;
-  const int W = ax.length();
+  const int W = cols_.size();
   const int rw = r.xs.size();
+  const int xa = std::max(r.xs.begin, cols_.begin), xb = std::min(r.xs.end, cols_.end);
   for (int y = rows.begin; y < rows.end; ++y) {
     const double wy = ay.weight(r.ty, y);
     const bool own_row = ay.owner(y) == r.ty;
@@ -36,10 +41,11 @@ void Blender::add_to_strip(const WindowResult& r, int seam) {
     std::uint8_t* sm = s.mask.data() + static_cast<std::size_t>(y - s.rows.begin) * W;
     const double* fz = r.z.data() + static_cast<std::size_t>(y - r.ys.begin) * rw;
     const std::uint8_t* fm = r.write.data() + static_cast<std::size_t>(y - r.ys.begin) * rw;
-    for (int x = r.xs.begin; x < r.xs.end; ++x) {
+    for (int x = xa; x < xb; ++x) {
       const int i = x - r.xs.begin;
-      sz[x] += (ax.weight(r.tx, x) * wy) * fz[i];
-      if (own_row && ax.owner(x) == r.tx) sm[x] = fm[i];
+      const int k = x - cols_.begin;
+      sz[k] += (ax.weight(r.tx, x) * wy) * fz[i];
+      if (own_row && ax.owner(x) == r.tx) sm[k] = fm[i];
     }
   }
 }
@@ -130,11 +136,13 @@ void Blender::emit(int x0, int y0, int w, int h, const double* z, const std::uin
 // A finished seam band, written in chunks of one tile's own columns.
 void Blender::flush_strip(Strip& s) {
   const TileAxis& ax = layout_.x;
-  const int W = ax.length();
+  const int W = ax.length(), stride = cols_.size();
   for (int tx = 0; tx < ax.count(); ++tx) {
-    const int x0 = tx * ax.step();
-    const int x1 = tx + 1 == ax.count() ? W : std::min(W, (tx + 1) * ax.step());
-    emit(x0, s.rows.begin, x1 - x0, s.rows.size(), s.z.data() + x0, s.mask.data() + x0, W);
+    const int x0 = std::max(cols_.begin, tx * ax.step());
+    const int x1 = std::min(cols_.end, tx + 1 == ax.count() ? W : std::min(W, (tx + 1) * ax.step()));
+    if (x0 >= x1) continue;
+    const std::size_t at = static_cast<std::size_t>(x0 - cols_.begin);
+    emit(x0, s.rows.begin, x1 - x0, s.rows.size(), s.z.data() + at, s.mask.data() + at, stride);
   }
   s = Strip{};
 }

@@ -5,8 +5,8 @@
 // tile's solo zone it is the window value itself, bit for bit. Only void cells
 // flagged by the window that owns the cell (TileAxis::owner) are written.
 //
-// Memory: the two horizontal seam bands of the current tile row (full width,
-// 2b-1 rows each) and one vertical seam band of the current tile (solo rows ×
+// Memory: the two horizontal seam bands of the current tile row (the
+// blender's columns: full width unless told, 2b-1 rows each) and one vertical seam band of the current tile (solo rows ×
 // 2b-1 columns) — bounded by tile size and raster width, never raster height.
 #pragma once
 
@@ -34,7 +34,11 @@ using BlockWriter =
 
 class Blender {
  public:
+  // Seam bands are kept over `cols` only (default: every column); cells
+  // outside it may be written wrong (a caller that keeps only a part of the
+  // raster, mcmd/chunked_fill.hpp, gives the part's columns).
   Blender(const TileLayout& layout, BlockWriter write);
+  Blender(const TileLayout& layout, BlockWriter write, Range cols);
 
   // Pre: results come in row-major tile order (ty, then tx, increasing);
   // tiles whose region has no void may be left out. Writes what is final.
@@ -66,6 +70,7 @@ class Blender {
 
   TileLayout layout_;
   BlockWriter write_;
+  Range cols_;
   Strip top_, bottom_;
   Pending pending_;
   std::vector<double> zbuf_;

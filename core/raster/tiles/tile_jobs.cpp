@@ -16,11 +16,6 @@ namespace mcmd::detail {
 
 namespace {
 
-struct JobResult {
-  WindowResult window;         // a window's
-  std::vector<double> values;  // a component's cells, run after run
-};
-
 // Results of jobs in flight, indexed by their position in the job list.
 struct Mailbox {
   std::mutex mutex;
@@ -62,11 +57,7 @@ struct CancelOnExit {
   ~CancelOnExit() { flag = true; }
 };
 
-// A job's input, read on the calling thread.
-struct JobInput {
-  WindowInput window;  // the read rectangle and its cells (a component's too)
-  ComponentGrid grid;  // a component's
-};
+}  // namespace
 
 std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan& plan, const Job& job) {
   auto in = std::make_shared<JobInput>();
@@ -101,6 +92,8 @@ JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job&
   }
   return r;
 }
+
+namespace {
 
 // One value per cell of a small component, whoever asks: written as is, never blended.
 std::size_t write_component(const RasterAccess& raster, const SmallComponent& c, const std::vector<double>& values) {

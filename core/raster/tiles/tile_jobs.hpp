@@ -6,13 +6,34 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "mcmd/progress.hpp"
 #include "mcmd/raster_access.hpp"
+#include "raster/tiles/lone_void.hpp"
 #include "raster/tiles/tile_plan.hpp"
 
 namespace mcmd::detail {
+
+// A job's input: the rectangle it reads and its cells (a component's grid too).
+struct JobInput {
+  WindowInput window;
+  ComponentGrid grid;  // a component's
+};
+
+struct JobResult {
+  WindowResult window;         // a window's
+  std::vector<double> values;  // a component's cells, run after run
+};
+
+// Read a job's input (raster.read, on the calling thread).
+std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan& plan, const Job& job);
+
+// Solve a job (any thread): a window's fill with the small components'
+// cells taken off its writes, or a component's values.
+JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job& job, const JobInput& in,
+                    double max_distance, const ProgressFn& progress);
 
 // Run plan.jobs, computed in `order` (a permutation of the job indices; a
 // reordered run still combines results in job order), at most `in_flight`

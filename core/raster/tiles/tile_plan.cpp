@@ -39,25 +39,34 @@ void skip_left_voids(const LeftVoids& left, ScanResult& scan, std::vector<SmallC
 
 }  // namespace
 
-bool plan_tiles(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
-                const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan, const LeftVoids& left) {
-  plan.layout = TileLayout(raster.width, raster.height,
-                           effective_tile_side(raster.width, raster.height, tiling.tile_side));
+namespace {
+
+void start_plan(int width, int height, const TilingParams& tiling, RasterFillStats& stats, TilePlan& plan) {
+  plan.layout = TileLayout(width, height, effective_tile_side(width, height, tiling.tile_side));
   const TileLayout& layout = plan.layout;
   plan.single = layout.tile_count() == 1;
-  if (!plan.single) plan.guide = CoarseGuide(raster.width, raster.height, guide_stride(raster.width, raster.height));
+  if (!plan.single) plan.guide = CoarseGuide(width, height, guide_stride(width, height));
   stats.tile_side = layout.tile_side();
   stats.tiles_x = layout.x.count();
   stats.tiles_y = layout.y.count();
+}
 
-  // Small void components are solved alone (docs/tiling.md, "Small voids"):
-  // the default method only, with a guide (several tiles), without -md.
-  const int small_extent = max_small_extent(layout);
+// Small void components are solved alone (docs/tiling.md, "Small voids"):
+// the default method only, with a guide (several tiles), without -md.
+std::optional<ComponentFinder> component_finder(const TilePlan& plan, const FillParams& params,
+                                                const TilingParams& tiling) {
+  const int small_extent = max_small_extent(plan.layout);
   std::optional<ComponentFinder> finder;
   if (!plan.single && params.method == Method::mcmd && tiling.max_distance == 0 && small_extent >= 1)
-    finder.emplace(raster.width, small_extent);
-  ScanResult scan = scan_raster(raster, layout, plan.single ? nullptr : &plan.guide, sub_progress(progress, 0.0, 2.0 / 3),
-                                finder ? &*finder : nullptr, &left);
+    finder.emplace(plan.layout.x.length(), small_extent);
+  return finder;
+}
+
+// After pass 1: the guide's solve, the small components and the jobs.
+bool finish_plan(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
+                 const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan, const LeftVoids& left,
+                 ScanResult& scan, std::optional<ComponentFinder>& finder) {
+  const TileLayout& layout = plan.layout;
   if (finder) {
     finder->finish();
     if (finder->overflow()) finder.reset();
@@ -76,7 +85,7 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
   plan.params.morph.channels = false;
   if (plan.params.noise_unit <= 0) plan.params.noise_unit = scan.hi - scan.lo;
   if (!plan.single) {
-    plan.guide.solve(plan.params, sub_progress(progress, 2.0 / 3, 1.0), effective_threads(tiling.threads));
+    plan.guide.solve(plan.params, progress, effective_threads(tiling.threads));
     stats.guide_stride = plan.guide.stride();
     if (tiling.max_distance > exact_distance_limit(layout)) plan.guide.prepare_distance();
   }
@@ -96,6 +105,50 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
   stats.small_components = plan.small.size();
   plan.radius = guided ? guide_radius(layout, plan.guide) : 0.0;
   return true;
+}
+
+// A raster of `voids`' cells as voids, every other cell known (at 0): what
+// pass 1 needs besides the elevations, for a plan built from chunks.
+RasterAccess void_pattern(int width, int height, const RunsByRow& voids) {
+  RasterAccess r;
+  r.width = width;
+  r.height = height;
+  r.read = [&voids, width](int x0, int y0, int w, int h, double* z, std::uint8_t* valid) {
+    std::vector<std::uint8_t> row(static_cast<std::size_t>(width));
+    for (int y = 0; y < h; ++y) {
+      std::fill(row.begin(), row.end(), 0);
+      voids.mark_row(y0 + y, row.data());
+      for (int x = 0; x < w; ++x) {
+        z[static_cast<std::size_t>(y) * w + x] = 0.0;
+        valid[static_cast<std::size_t>(y) * w + x] = row[x0 + x] ? 0 : 1;
+      }
+    }
+  };
+  r.write = [](int, int, int, int, const double*, const std::uint8_t*) {};
+  return r;
+}
+
+}  // namespace
+
+bool plan_tiles(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
+                const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan, const LeftVoids& left) {
+  start_plan(raster.width, raster.height, tiling, stats, plan);
+  std::optional<ComponentFinder> finder = component_finder(plan, params, tiling);
+  ScanResult scan = scan_raster(raster, plan.layout, plan.single ? nullptr : &plan.guide,
+                                sub_progress(progress, 0.0, 2.0 / 3), finder ? &*finder : nullptr, &left);
+  return finish_plan(raster, params, tiling, sub_progress(progress, 2.0 / 3, 1.0), stats, plan, left, scan, finder);
+}
+
+bool plan_from_parts(const PlanParts& parts, const FillParams& params, const TilingParams& tiling,
+                     RasterFillStats& stats, TilePlan& plan) {
+  start_plan(parts.width, parts.height, tiling, stats, plan);
+  if (!plan.single) parts.set_guide(plan.guide);
+  std::optional<ComponentFinder> finder = component_finder(plan, params, tiling);
+  const RasterAccess pattern = void_pattern(parts.width, parts.height, parts.voids);
+  ScanResult scan = scan_raster(pattern, plan.layout, nullptr, {}, finder ? &*finder : nullptr);
+  scan.lo = parts.lo;
+  scan.hi = parts.hi;
+  return finish_plan(pattern, params, tiling, {}, stats, plan, LeftVoids{}, scan, finder);
 }
 
 }  // namespace mcmd::detail

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "mcmd/params.hpp"
@@ -43,5 +44,24 @@ struct TilePlan {
 // when no cell is known, Cancelled.
 bool plan_tiles(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
                 const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan, const LeftVoids& left);
+
+// What pass 1 gathers, brought together from the chunks of a fill split over
+// workers (raster/tiles/chunked_fill.cpp): the void cells, the known range,
+// and the guide's moments (set_guide puts them into a guide of the layout's
+// size).
+struct PlanParts {
+  int width = 0;
+  int height = 0;
+  RunsByRow voids;
+  double lo = 0.0;
+  double hi = -1.0;
+  std::function<void(CoarseGuide&)> set_guide;
+};
+
+// The plan plan_tiles makes of the raster these parts were gathered from
+// (same guide, components and jobs; no lines, no voids left). The raster must
+// have a void and a known cell (else returns false / throws as plan_tiles).
+bool plan_from_parts(const PlanParts& parts, const FillParams& params, const TilingParams& tiling,
+                     RasterFillStats& stats, TilePlan& plan);
 
 }  // namespace mcmd::detail

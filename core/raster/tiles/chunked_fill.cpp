@@ -1,0 +1,281 @@
+// The tiled fill in chunks (mcmd/chunked_fill.hpp): the same plan, windows,
+// small components and blending as tiles/tiled_fill.cpp, each step limited
+// to one chunk's share.
+#include "mcmd/chunked_fill.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <tuple>
+
+#include "mcmd/fill_raster.hpp"
+#include "raster/frame.hpp"
+#include "raster/tiles/blend.hpp"
+#include "raster/tiles/lone_void.hpp"
+#include "raster/tiles/tile_jobs.hpp"
+#include "raster/tiles/tile_plan.hpp"
+
+namespace mcmd {
+
+namespace {
+
+// Moments travel as 9 doubles.
+void to_doubles(const CoarseGuide::Moments& m, double* d) {
+  const double v[9] = {m.n, m.z, m.x, m.y, m.xx, m.yy, m.xy, m.zx, m.zy};
+  std::copy_n(v, 9, d);
+}
+CoarseGuide::Moments from_doubles(const double* d) {
+  return CoarseGuide::Moments{d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7], d[8]};
+}
+
+}  // namespace
+
+struct ChunkedPlan::State {
+  detail::TilePlan plan;
+  RasterFillStats stats;
+  bool voids = false;
+  double max_distance = 0.0;
+  std::vector<std::pair<int, int>> component_centres;  // of their grids: who solves each
+};
+
+namespace {
+
+TileLayout layout_of(int width, int height, const TilingParams& tiling) {
+  return TileLayout(width, height, effective_tile_side(width, height, tiling.tile_side));
+}
+
+bool inside(int x, int y, const CellRect& r) { return x >= r.x0 && x < r.x0 + r.w && y >= r.y0 && y < r.y0 + r.h; }
+
+void check_supported(const TilingParams& tiling) {
+  if (tiling.inner_only || tiling.max_void_cells > 0)
+    throw std::invalid_argument("a chunked fill cannot leave voids unfilled (INNER_ONLY, MAX_VOID): fill the file");
+}
+
+// The cells of `r` in one read.
+struct Cells {
+  CellRect rect;
+  std::vector<double> z;
+  std::vector<std::uint8_t> valid;
+};
+Cells read_cells(const RasterAccess& raster, CellRect r) {
+  Cells c{r, std::vector<double>(static_cast<std::size_t>(r.w) * r.h), {}};
+  c.valid.resize(c.z.size());
+  if (!c.z.empty()) raster.read(r.x0, r.y0, r.w, r.h, c.z.data(), c.valid.data());
+  return c;
+}
+
+CellRect grown(const CellRect& own, int by, int width, int height) {
+  const int x0 = std::max(0, own.x0 - by), y0 = std::max(0, own.y0 - by);
+  const int x1 = std::min(width, own.x0 + own.w + by), y1 = std::min(height, own.y0 + own.h + by);
+  return CellRect{x0, y0, x1 - x0, y1 - y0};
+}
+
+void count_cells(const Cells& c, const CellRect& own, ChunkSummary& s) {
+  const int x1 = own.x0 + own.w;
+  for (int y = own.y0; y < own.y0 + own.h; ++y) {
+    const double* z = c.z.data() + static_cast<std::size_t>(y - c.rect.y0) * c.rect.w + (own.x0 - c.rect.x0);
+    const std::uint8_t* valid = c.valid.data() + (z - c.z.data());
+    int run = -1;
+    for (int x = own.x0; x <= x1; ++x) {
+      const bool known = x < x1 && valid[x - own.x0];
+      const bool void_cell = x < x1 && !known;
+      if (known) {
+        ++s.known;
+        s.lo = std::min(s.lo, z[x - own.x0]);
+        s.hi = std::max(s.hi, z[x - own.x0]);
+      }
+      if (void_cell) {
+        ++s.voids;
+        if (run < 0) run = x;
+      } else if (run >= 0) {
+        s.void_runs.insert(s.void_runs.end(), {y, run, x});
+        run = -1;
+      }
+    }
+  }
+}
+
+void put_moments(CoarseGuide& guide, const ChunkSummary& s) {
+  const Range is{s.i0, s.i1}, js{s.j0, s.j1};
+  std::vector<CoarseGuide::Moments> part(static_cast<std::size_t>(is.size()) * js.size());
+  if (s.moments.size() != part.size() * 9) throw std::invalid_argument("a chunk summary's moments do not fit it");
+  for (std::size_t k = 0; k < part.size(); ++k) part[k] = from_doubles(s.moments.data() + 9 * k);
+  guide.set_moments(is, js, part);
+}
+
+// Writes through `out` only the part of a rectangle inside `own`.
+BlockWriter clipped_writer(const RasterAccess& out, const CellRect& own) {
+  return [&out, own](int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
+    const int cx0 = std::max(x0, own.x0), cy0 = std::max(y0, own.y0);
+    const int cx1 = std::min(x0 + w, own.x0 + own.w), cy1 = std::min(y0 + h, own.y0 + own.h);
+    if (cx0 >= cx1 || cy0 >= cy1) return;
+    const int cw = cx1 - cx0, ch = cy1 - cy0;
+    std::vector<double> zc(static_cast<std::size_t>(cw) * ch);
+    std::vector<std::uint8_t> mc(zc.size());
+    bool any = false;
+    for (int y = 0; y < ch; ++y)
+      for (int x = 0; x < cw; ++x) {
+        const std::size_t from = static_cast<std::size_t>(cy0 - y0 + y) * w + (cx0 - x0 + x);
+        zc[static_cast<std::size_t>(y) * cw + x] = z[from];
+        mc[static_cast<std::size_t>(y) * cw + x] = mask[from];
+        any = any || mask[from];
+      }
+    if (any) out.write(cx0, cy0, cw, ch, zc.data(), mc.data());
+  };
+}
+
+}  // namespace
+
+ChunkGrid chunk_grid(int width, int height, const TilingParams& tiling) {
+  const TileLayout layout = layout_of(width, height, tiling);
+  ChunkGrid g;
+  g.step = layout.x.step();
+  g.whole = layout.tile_count() == 1;
+  const int stride = g.whole ? 0 : guide_stride(width, height);
+  g.margin = std::max(g.step + 2, stride / 2);
+  g.min_side = g.margin;
+  return g;
+}
+
+ChunkSummary summarize_chunk(const RasterAccess& raster, const TilingParams& tiling, CellRect own) {
+  const int W = raster.width, H = raster.height;
+  if (own.w < 1 || own.h < 1 || own.x0 < 0 || own.y0 < 0 || own.x0 + own.w > W || own.y0 + own.h > H)
+    throw std::invalid_argument("the chunk does not lie inside the raster");
+  const ChunkGrid grid = chunk_grid(W, H, tiling);
+  ChunkSummary s;
+  s.own = own;
+  const int stride = grid.whole ? 0 : guide_stride(W, H);
+  const Cells cells = read_cells(raster, grown(own, stride / 2, W, H));
+  count_cells(cells, own, s);
+  if (grid.whole) return s;
+  const Range is = CoarseGuide::lattice_points(W, stride, own.x0, own.x0 + own.w);
+  const Range js = CoarseGuide::lattice_points(H, stride, own.y0, own.y0 + own.h);
+  const CoarseGuide::CellBlock block{cells.rect.x0, cells.rect.y0, cells.rect.w, cells.rect.h, cells.z.data(),
+                                     cells.valid.data()};
+  const std::vector<CoarseGuide::Moments> part = CoarseGuide::part_moments(W, H, stride, is, js, block);
+  s.i0 = is.begin, s.i1 = is.end, s.j0 = js.begin, s.j1 = js.end;
+  s.moments.resize(part.size() * 9);
+  for (std::size_t k = 0; k < part.size(); ++k) to_doubles(part[k], s.moments.data() + 9 * k);
+  return s;
+}
+
+ChunkedPlan::ChunkedPlan(int width, int height, const FillParams& params, const TilingParams& tiling,
+                         const std::vector<ChunkSummary>& summaries)
+    : state_(std::make_unique<State>()) {
+  check_supported(tiling);
+  detail::PlanParts parts;
+  parts.width = width;
+  parts.height = height;
+  parts.lo = std::numeric_limits<double>::infinity();
+  parts.hi = -parts.lo;
+  std::vector<detail::VoidRun> runs;
+  for (const ChunkSummary& s : summaries) {
+    parts.lo = std::min(parts.lo, s.lo);
+    parts.hi = std::max(parts.hi, s.hi);
+    for (std::size_t k = 0; k + 2 < s.void_runs.size(); k += 3)
+      runs.push_back(detail::VoidRun{s.void_runs[k], s.void_runs[k + 1], s.void_runs[k + 2]});
+  }
+  parts.voids = detail::RunsByRow(std::move(runs), height);
+  parts.set_guide = [&summaries](CoarseGuide& guide) {
+    for (const ChunkSummary& s : summaries) put_moments(guide, s);
+  };
+  State& st = *state_;
+  st.max_distance = tiling.max_distance;
+  try {
+    st.voids = detail::plan_from_parts(parts, params, tiling, st.stats, st.plan);
+  } catch (const detail::ExtremeRange&) {
+    throw std::invalid_argument("known values beyond ±1e100 need the file's fill (a chunked fill has no frame)");
+  }
+  for (const detail::SmallComponent& c : st.plan.small) {
+    const detail::ComponentGrid g = detail::component_grid(c.box, width, height);
+    st.component_centres.emplace_back(g.rect.x0 + g.rect.w / 2, g.rect.y0 + g.rect.h / 2);
+  }
+}
+
+ChunkedPlan::~ChunkedPlan() = default;
+
+bool ChunkedPlan::has_voids() const { return state_->voids; }
+std::size_t ChunkedPlan::known_cells() const { return state_->stats.known_cells; }
+std::size_t ChunkedPlan::void_cells() const { return state_->stats.void_cells; }
+
+ChunkSolution solve_chunk(const RasterAccess& raster, const ChunkedPlan& plan, CellRect own,
+                          const ProgressFn& progress) {
+  const ChunkedPlan::State& st = plan.state();
+  const detail::TilePlan& tp = st.plan;
+  ChunkSolution out;
+  if (!st.voids) return out;
+  const int P = tp.layout.x.step(), nx = tp.layout.x.count();
+  for (const detail::Job& job : tp.jobs) {
+    if (job.component) {
+      const auto [cx, cy] = st.component_centres[job.index];
+      if (!inside(cx, cy, own)) continue;
+    } else {
+      const int tx = static_cast<int>(job.index % nx), ty = static_cast<int>(job.index / nx);
+      if (!inside(tx * P, ty * P, own)) continue;
+    }
+    report(progress, 0.0);
+    const std::shared_ptr<detail::JobInput> in = detail::read_input(raster, tp, job);
+    detail::JobResult r = detail::solve_job(raster, tp, job, *in, st.max_distance, progress);
+    if (job.component) {
+      out.components.push_back(ComponentSolution{job.index, std::move(r.values)});
+    } else {
+      WindowResult& w = r.window;
+      out.windows.push_back(WindowSolution{w.tx, w.ty, w.xs.begin, w.xs.end, w.ys.begin, w.ys.end, std::move(w.z),
+                                           std::move(w.write)});
+    }
+  }
+  return out;
+}
+
+void blend_chunk(const RasterAccess& out, const ChunkedPlan& plan, const std::vector<const ChunkSolution*>& around,
+                 CellRect own) {
+  const ChunkedPlan::State& st = plan.state();
+  if (!st.voids) return;
+  const detail::TilePlan& tp = st.plan;
+  const BlockWriter write = clipped_writer(out, own);
+  // The windows whose output region meets the chunk, in the tiled fill's
+  // order (row-major), each once.
+  std::vector<const WindowSolution*> windows;
+  for (const ChunkSolution* s : around)
+    for (const WindowSolution& w : s->windows)
+      if (w.x0 < own.x0 + own.w && w.x1 > own.x0 && w.y0 < own.y0 + own.h && w.y1 > own.y0) windows.push_back(&w);
+  std::sort(windows.begin(), windows.end(),
+            [](const WindowSolution* a, const WindowSolution* b) { return std::tie(a->ty, a->tx) < std::tie(b->ty, b->tx); });
+  windows.erase(std::unique(windows.begin(), windows.end(),
+                            [](const WindowSolution* a, const WindowSolution* b) { return a->tx == b->tx && a->ty == b->ty; }),
+                windows.end());
+  const int P = tp.layout.x.step();
+  Blender blender(tp.layout, write, Range{own.x0 - P, own.x0 + own.w + P});
+  int rows_ended = 0;
+  for (const WindowSolution* w : windows) {
+    for (; rows_ended < w->ty; ++rows_ended) blender.end_row(rows_ended);
+    WindowResult r;
+    r.tx = w->tx, r.ty = w->ty;
+    r.xs = Range{w->x0, w->x1}, r.ys = Range{w->y0, w->y1};
+    r.z = w->z;
+    r.write = w->write;
+    blender.add(r);
+  }
+  for (; rows_ended < tp.layout.y.count(); ++rows_ended) blender.end_row(rows_ended);
+
+  // Small components: one value per cell, written as they are.
+  std::vector<bool> done(tp.small.size(), false);
+  for (const ChunkSolution* s : around)
+    for (const ComponentSolution& c : s->components) {
+      if (c.index >= tp.small.size() || done[c.index]) continue;
+      done[c.index] = true;
+      const detail::SmallComponent& comp = tp.small[c.index];
+      const int w = comp.box.width(), h = comp.box.height();
+      std::vector<double> z(static_cast<std::size_t>(w) * h, 0.0);
+      std::vector<std::uint8_t> mask(z.size(), 0);
+      std::size_t k = 0;
+      for (const detail::VoidRun& run : comp.runs)
+        for (int x = run.x0; x < run.x1; ++x, ++k) {
+          const std::size_t i = static_cast<std::size_t>(run.y - comp.box.y0) * w + (x - comp.box.x0);
+          z[i] = c.values.at(k);
+          mask[i] = 1;
+        }
+      write(comp.box.x0, comp.box.y0, w, h, z.data(), mask.data());
+    }
+}
+
+}  // namespace mcmd
