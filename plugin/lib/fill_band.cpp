@@ -31,14 +31,6 @@ void fail_no_valid(const FillRequest& r) {
   throw Failure(CPLE_AppDefined, band_name(r) + " has no valid cell: nothing to fill from");
 }
 
-// The options' fill parameters for this band: an integer band's values are
-// whole units (FillParams::z_step).
-FillParams params_for(const Options& options, BandAccess& band) {
-  FillParams p = options.fill;
-  if (GDALDataTypeIsInteger(band.source_type()) && !GDALDataTypeIsComplex(band.source_type())) p.z_step = 1.0;
-  return p;
-}
-
 // The ridge and river lines of the options, on the source's grid; a warning
 // when a file's lines all miss the raster.
 std::vector<Line> lines_of(const Options& options, GDALDataset* source) {
@@ -66,6 +58,12 @@ std::vector<Line> lines_of(const Options& options, GDALDataset* source) {
 }
 
 }  // namespace
+
+FillParams fill_params(const Options& options, GDALDataType type) {
+  FillParams p = options.fill;
+  if (GDALDataTypeIsInteger(type) && !GDALDataTypeIsComplex(type)) p.z_step = 1.0;
+  return p;
+}
 
 GDALRasterBand* own_mask(GDALRasterBand& band) {
   return band.GetMaskFlags() == GMF_ALL_VALID ? nullptr : band.GetMaskBand();
@@ -112,9 +110,9 @@ void fill_band_access(BandAccess& band, const FillRequest& request, const Option
   }
   try {
     if (second)
-      fill_raster_from(access, background_of(*second), params_for(options, band), tiling, capped, hooks);
+      fill_raster_from(access, background_of(*second), fill_params(options, band.source_type()), tiling, capped, hooks);
     else
-      fill_raster(access, params_for(options, band), tiling, capped, hooks);
+      fill_raster(access, fill_params(options, band.source_type()), tiling, capped, hooks);
   } catch (const std::invalid_argument&) {
     // Checked after the first pass, before anything is written.
     if (stats.void_cells > 0 && stats.known_cells == 0) fail_no_valid(request);

@@ -16,6 +16,10 @@ namespace mcmd::gdal {
 // The band's own validity mask, or nullptr when it says every cell is valid.
 GDALRasterBand* own_mask(GDALRasterBand& band);
 
+// The options' fill parameters for a band of `type`: an integer band's
+// values are whole units (FillParams::z_step).
+FillParams fill_params(const Options& options, GDALDataType type);
+
 // Read `band` and its masks and throw the Failure fill_band would throw for
 // them (nothing marks voids, no valid cell), without writing anything.
 void check_band(GDALRasterBand& band, const FillRequest& request);

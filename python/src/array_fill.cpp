@@ -54,23 +54,29 @@ MemoryRaster memory_raster(const char* gdal_type_name, void* cells, int width, i
   return r;
 }
 
+MemoryBand::MemoryBand(const MemoryRaster& raster, const std::uint8_t* valid, const Nodata& nodata) {
+  ds_ = wrap(raster.cells, raster.type, raster.width, raster.height);
+  band_ = ds_->GetRasterBand(1);
+  if (raster.signed_byte) band_->SetMetadataItem("PIXELTYPE", "SIGNEDBYTE", "IMAGE_STRUCTURE");
+  set_nodata(*band_, nodata);
+  // As the CLI asks for a band (cli/run.cpp).
+  if (valid) {
+    mask_ds_ = wrap(const_cast<std::uint8_t*>(valid), GDT_Byte, raster.width, raster.height);
+    request_.masks.push_back(mask_ds_->GetRasterBand(1));
+  }
+  if (GDALRasterBand* own = gdal::own_mask(*band_)) request_.masks.push_back(own);
+  request_.require_void_marker = true;
+}
+
+MemoryBand::~MemoryBand() {
+  if (ds_) ds_->FlushCache();
+}
+
 void fill_memory_raster(const MemoryRaster& raster, const std::uint8_t* valid, const Nodata& nodata,
                         const gdal::Options& options, const ProgressFn& progress) {
   cli::ErrorLog log;  // GDAL's own messages stay quiet: failures are thrown
-  DatasetPtr ds = wrap(raster.cells, raster.type, raster.width, raster.height);
-  GDALRasterBand& band = *ds->GetRasterBand(1);
-  if (raster.signed_byte) band.SetMetadataItem("PIXELTYPE", "SIGNEDBYTE", "IMAGE_STRUCTURE");
-  set_nodata(band, nodata);
-  DatasetPtr mask_ds;
-  gdal::FillRequest request;  // as the CLI asks for a band (cli/run.cpp)
-  if (valid) {
-    mask_ds = wrap(const_cast<std::uint8_t*>(valid), GDT_Byte, raster.width, raster.height);
-    request.masks.push_back(mask_ds->GetRasterBand(1));
-  }
-  if (GDALRasterBand* own = gdal::own_mask(band)) request.masks.push_back(own);
-  request.require_void_marker = true;
-  gdal::fill_band(band, request, options, progress);
-  ds->FlushCache();
+  MemoryBand band(raster, valid, nodata);
+  gdal::fill_band(band.band(), band.request(), options, progress);
 }
 
 }  // namespace mcmd::python

@@ -7,7 +7,9 @@
 #include <cstdint>
 #include <variant>
 
+#include "cli/dataset.hpp"
 #include "gdal.h"
+#include "lib/fill_request.hpp"
 #include "lib/options.hpp"
 #include "mcmd/progress.hpp"
 
@@ -27,6 +29,24 @@ struct MemoryRaster {
 // The GDAL type of a numpy dtype named as GDAL names it ("Int16"; "Int8"
 // maps to a signed GDT_Byte before GDAL 3.7). Throws std::invalid_argument.
 MemoryRaster memory_raster(const char* gdal_type_name, void* cells, int width, int height);
+
+// `raster` as band 1 of a MEM dataset over its cells (not copied), with its
+// nodata value and `valid` (width × height bytes, may be null; 0 = void) as a
+// mask: the band and the request the CLI would fill. Flushes when destroyed.
+class MemoryBand {
+ public:
+  MemoryBand(const MemoryRaster& raster, const std::uint8_t* valid, const Nodata& nodata);
+  ~MemoryBand();
+  MemoryBand(const MemoryBand&) = delete;
+  MemoryBand& operator=(const MemoryBand&) = delete;
+  GDALRasterBand& band() { return *band_; }
+  const gdal::FillRequest& request() const { return request_; }
+
+ private:
+  cli::DatasetPtr ds_, mask_ds_;
+  GDALRasterBand* band_ = nullptr;
+  gdal::FillRequest request_;
+};
 
 // Fill the voids of `raster` in place: NaN and infinite cells, cells equal to
 // `nodata`, and cells where `valid` (width × height bytes, may be null) is 0.

@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "array_fill.hpp"
+#include "chunk_fill.hpp"
 #include "cpl_string.h"
 #include "exceptions.hpp"
 #include "file_fill.hpp"
@@ -101,4 +102,5 @@ PYBIND11_MODULE(_mcmd, m) {
         "Fill the voids of `out` (C-contiguous, 2-D, native byte order, of GDAL type `gdal_type`) in place.");
   m.def("fill_file", &fill_file_, py::arg("flags"), py::arg("src"), py::arg("dst"), py::arg("progress"),
         "Run mcmd_fillnodata's code: `flags` as the CLI takes them, dst '' = in place.");
+  register_chunk_fill(m);
 }

@@ -1,0 +1,250 @@
+#include "chunk_fill.hpp"
+
+#include <climits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "array_fill.hpp"
+#include "cli/error_log.hpp"
+#include "cpl_string.h"
+#include "lib/band_access.hpp"
+#include "lib/fill_band.hpp"
+#include "mcmd/chunked_fill.hpp"
+#include "mcmd/fill_raster.hpp"
+
+namespace py = pybind11;
+
+namespace mcmd::python {
+
+namespace {
+
+gdal::Options parsed(const std::vector<std::string>& options) {
+  CPLStringList list;
+  for (const std::string& o : options) list.AddString(o.c_str());
+  return gdal::parse_options(list.List());
+}
+
+TilingParams tiling_for(const gdal::Options& o) {
+  TilingParams t = gdal::tiling_of(o);
+  t.always_tile = true;  // the chunked fill is the tiled fill
+  return t;
+}
+
+CellRect rect_of(const std::tuple<int, int, int, int>& r) {
+  return CellRect{std::get<0>(r), std::get<1>(r), std::get<2>(r), std::get<3>(r)};
+}
+
+Nodata nodata_of(const py::object& nodata, GDALDataType type) {
+  if (nodata.is_none()) return {};
+  if (type == GDT_Int64) return nodata.cast<std::int64_t>();
+  if (type == GDT_UInt64) return nodata.cast<std::uint64_t>();
+  return nodata.cast<double>();
+}
+
+// A block of the raster in memory, at (x0, y0) of a width × height raster,
+// seen through the CLI's band access in the raster's coordinates.
+class Block {
+ public:
+  Block(py::array& cells, const std::optional<py::array>& valid, const std::string& gdal_type,
+        const py::object& nodata, std::pair<int, int> origin, std::pair<int, int> raster_size)
+      : x0_(origin.first), y0_(origin.second) {
+    if (cells.ndim() != 2 || !(cells.flags() & py::array::c_style) || !cells.dtype().attr("isnative").cast<bool>())
+      throw std::invalid_argument("a block must be a C-contiguous 2-D array in native byte order");
+    if (cells.shape(0) > INT_MAX || cells.shape(1) > INT_MAX) throw std::invalid_argument("the block is too large");
+    raster_ = memory_raster(gdal_type.c_str(), cells.mutable_data(), static_cast<int>(cells.shape(1)),
+                            static_cast<int>(cells.shape(0)));
+    if (valid && (valid->ndim() != 2 || valid->shape(0) != cells.shape(0) || valid->shape(1) != cells.shape(1) ||
+                  valid->itemsize() != 1 || !(valid->flags() & py::array::c_style)))
+      throw std::invalid_argument("a block's mask must be C-contiguous uint8 of the block's shape");
+    band_.emplace(raster_, valid ? static_cast<const std::uint8_t*>(valid->data()) : nullptr,
+                  nodata_of(nodata, raster_.type));
+    access_.emplace(band_->band(), band_->band(), band_->request());
+    local_ = access_->access();
+    global_.width = raster_size.first;
+    global_.height = raster_size.second;
+    global_.read = [this](int x, int y, int w, int h, double* z, std::uint8_t* v) {
+      check(x, y, w, h);
+      local_.read(x - x0_, y - y0_, w, h, z, v);
+    };
+    global_.write = [this](int x, int y, int w, int h, const double* z, const std::uint8_t* m) {
+      check(x, y, w, h);
+      local_.write(x - x0_, y - y0_, w, h, z, m);
+    };
+  }
+  const RasterAccess& access() const { return global_; }
+  GDALDataType type() const { return raster_.type; }
+
+ private:
+  void check(int x, int y, int w, int h) const {
+    if (x < x0_ || y < y0_ || x + w > x0_ + raster_.width || y + h > y0_ + raster_.height)
+      throw std::logic_error("the chunked fill asked for cells outside its block");
+  }
+  int x0_, y0_;
+  MemoryRaster raster_;
+  std::optional<MemoryBand> band_;
+  std::optional<gdal::BandAccess> access_;
+  RasterAccess local_, global_;
+};
+
+template <class T>
+py::array_t<T> to_numpy(std::vector<T>&& v) {
+  auto* held = new std::vector<T>(std::move(v));
+  py::capsule owner(held, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>({static_cast<py::ssize_t>(held->size())}, {sizeof(T)}, held->data(), owner);
+}
+
+template <class T>
+std::vector<T> from_numpy(const py::handle& h) {
+  const auto a = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(h);
+  if (!a) throw std::invalid_argument("expected a numeric array");
+  return std::vector<T>(a.data(), a.data() + a.size());
+}
+
+py::dict summary_dict(ChunkSummary&& s) {
+  py::dict d;
+  d["own"] = py::make_tuple(s.own.x0, s.own.y0, s.own.w, s.own.h);
+  d["lattice"] = py::make_tuple(s.i0, s.i1, s.j0, s.j1);
+  d["moments"] = to_numpy(std::move(s.moments));
+  d["known"] = s.known;
+  d["voids"] = s.voids;
+  d["lo"] = s.lo;
+  d["hi"] = s.hi;
+  d["void_runs"] = to_numpy(std::move(s.void_runs));
+  return d;
+}
+
+ChunkSummary summary_of(const py::dict& d) {
+  ChunkSummary s;
+  s.own = rect_of(d["own"].cast<std::tuple<int, int, int, int>>());
+  std::tie(s.i0, s.i1, s.j0, s.j1) = d["lattice"].cast<std::tuple<int, int, int, int>>();
+  s.moments = from_numpy<double>(d["moments"]);
+  s.known = d["known"].cast<std::size_t>();
+  s.voids = d["voids"].cast<std::size_t>();
+  s.lo = d["lo"].cast<double>();
+  s.hi = d["hi"].cast<double>();
+  s.void_runs = from_numpy<int>(d["void_runs"]);
+  return s;
+}
+
+// A chunk's solution as Python values (it crosses processes: picklable).
+py::tuple solution_tuple(ChunkSolution&& s) {
+  py::list windows, components;
+  for (WindowSolution& w : s.windows)
+    windows.append(py::make_tuple(w.tx, w.ty, w.x0, w.x1, w.y0, w.y1, to_numpy(std::move(w.z)),
+                                  to_numpy(std::move(w.write))));
+  for (ComponentSolution& c : s.components) components.append(py::make_tuple(c.index, to_numpy(std::move(c.values))));
+  return py::make_tuple(windows, components);
+}
+
+ChunkSolution solution_of(const py::tuple& t) {
+  ChunkSolution s;
+  for (const py::handle& h : t[0].cast<py::list>()) {
+    const auto w = h.cast<py::tuple>();
+    s.windows.push_back(WindowSolution{w[0].cast<int>(), w[1].cast<int>(), w[2].cast<int>(), w[3].cast<int>(),
+                                       w[4].cast<int>(), w[5].cast<int>(), from_numpy<double>(w[6]),
+                                       from_numpy<std::uint8_t>(w[7])});
+  }
+  for (const py::handle& h : t[1].cast<py::list>()) {
+    const auto c = h.cast<py::tuple>();
+    s.components.push_back(ComponentSolution{c[0].cast<std::size_t>(), from_numpy<double>(c[1])});
+  }
+  return s;
+}
+
+struct Plan {
+  int width, height;
+  std::unique_ptr<ChunkedPlan> plan;
+};
+
+}  // namespace
+
+void register_chunk_fill(py::module_& m) {
+  m.def(
+      "chunk_grid",
+      [](int width, int height, const std::vector<std::string>& options) {
+        const ChunkGrid g = chunk_grid(width, height, tiling_for(parsed(options)));
+        return py::make_tuple(g.step, g.min_side, g.margin, g.whole);
+      },
+      py::arg("width"), py::arg("height"), py::arg("options"),
+      "(step, min_side, margin, whole): chunk sides are multiples of step, at least min_side; blocks are read "
+      "with margin cells around a chunk; whole: the raster must be one chunk.");
+  m.def(
+      "fills_whole",
+      [](int width, int height, const std::vector<std::string>& options) {
+        const gdal::Options o = parsed(options);
+        return fills_whole(width, height, o.fill, gdal::tiling_of(o));
+      },
+      py::arg("width"), py::arg("height"), py::arg("options"),
+      "Whether the CLI fills such a raster whole rather than through tiles.");
+  m.def(
+      "summarize_chunk",
+      [](py::array block, std::optional<py::array> valid, const std::string& gdal_type, py::object nodata,
+         const std::vector<std::string>& options, std::pair<int, int> origin, std::pair<int, int> raster_size,
+         std::tuple<int, int, int, int> own) {
+        const TilingParams tiling = tiling_for(parsed(options));
+        cli::ErrorLog log;
+        Block b(block, valid, gdal_type, nodata, origin, raster_size);
+        ChunkSummary s;
+        {
+          const py::gil_scoped_release nogil;
+          s = summarize_chunk(b.access(), tiling, rect_of(own));
+        }
+        return summary_dict(std::move(s));
+      },
+      py::arg("block"), py::arg("valid"), py::arg("gdal_type"), py::arg("nodata"), py::arg("options"),
+      py::arg("origin"), py::arg("raster_size"), py::arg("own"), "Step 1: a chunk's summary (a dict).");
+  py::class_<Plan>(m, "ChunkedPlan", "Step 2: the plan, from every chunk's summary.")
+      .def(py::init([](int width, int height, const std::string& gdal_type, const std::vector<std::string>& options,
+                       const py::list& summaries) {
+             const gdal::Options o = parsed(options);
+             std::vector<ChunkSummary> parts;
+             for (const py::handle& h : summaries) parts.push_back(summary_of(h.cast<py::dict>()));
+             const MemoryRaster type = memory_raster(gdal_type.c_str(), nullptr, 1, 1);
+             const py::gil_scoped_release nogil;
+             return Plan{width, height,
+                         std::make_unique<ChunkedPlan>(width, height, gdal::fill_params(o, type.type), tiling_for(o),
+                                                       parts)};
+           }),
+           py::arg("width"), py::arg("height"), py::arg("gdal_type"), py::arg("options"), py::arg("summaries"))
+      .def_property_readonly("has_voids", [](const Plan& p) { return p.plan->has_voids(); })
+      .def_property_readonly("known_cells", [](const Plan& p) { return p.plan->known_cells(); })
+      .def_property_readonly("void_cells", [](const Plan& p) { return p.plan->void_cells(); });
+  m.def(
+      "solve_chunk",
+      [](const Plan& plan, py::array block, std::optional<py::array> valid, const std::string& gdal_type,
+         py::object nodata, std::pair<int, int> origin, std::tuple<int, int, int, int> own) {
+        cli::ErrorLog log;
+        Block b(block, valid, gdal_type, nodata, origin, {plan.width, plan.height});
+        ChunkSolution s;
+        {
+          const py::gil_scoped_release nogil;
+          s = solve_chunk(b.access(), *plan.plan, rect_of(own));
+        }
+        return solution_tuple(std::move(s));
+      },
+      py::arg("plan"), py::arg("block"), py::arg("valid"), py::arg("gdal_type"), py::arg("nodata"),
+      py::arg("origin"), py::arg("own"), "Step 3: the windows and small voids a chunk owns, solved.");
+  m.def(
+      "blend_chunk",
+      [](const Plan& plan, py::array out, std::optional<py::array> valid, const std::string& gdal_type,
+         py::object nodata, std::tuple<int, int, int, int> own, const py::list& around) {
+        std::vector<ChunkSolution> solutions;
+        for (const py::handle& h : around) solutions.push_back(solution_of(h.cast<py::tuple>()));
+        std::vector<const ChunkSolution*> pointers;
+        for (const ChunkSolution& s : solutions) pointers.push_back(&s);
+        const CellRect r = rect_of(own);
+        cli::ErrorLog log;
+        Block b(out, valid, gdal_type, nodata, {r.x0, r.y0}, {plan.width, plan.height});
+        const py::gil_scoped_release nogil;
+        blend_chunk(b.access(), *plan.plan, pointers, r);
+      },
+      py::arg("plan"), py::arg("out"), py::arg("valid"), py::arg("gdal_type"), py::arg("nodata"), py::arg("own"),
+      py::arg("around"), "Step 4: fill `out` (the chunk's cells, in place) from the solutions around it.");
+}
+
+}  // namespace mcmd::python
