@@ -132,12 +132,13 @@ def _mask_array(mask: Any, arr: da.Array) -> Optional[da.Array]:
     if mask is None:
         return None
     m = mask.data if _as_dataarray(mask) is not None else mask
-    m = m if isinstance(m, da.Array) else da.from_array(np.asarray(m), chunks=arr.chunks)
+    if not isinstance(m, da.Array):
+        m = np.asarray(m)
     if m.shape != arr.shape:
         raise ValueError(f"the mask has shape {m.shape} but the array has shape {arr.shape}")
     if m.dtype.kind not in "biuf":
         raise ValueError(f"mask dtype {m.dtype} is not supported: expected bool or a number (0 = void)")
-    return m
+    return m if isinstance(m, da.Array) else da.from_array(m, chunks=arr.chunks)
 
 
 def _chunk_side(chunks: Optional[int], arr: da.Array, step: int, min_side: int) -> int:

@@ -1,0 +1,170 @@
+"""mcmd.dask: the lazy fill of dask arrays and DataArrays, and the command
+python3 -m mcmd.dask, against the real mcmd_fillnodata, bit for bit, on real
+LocalClusters (worker processes) and the threaded scheduler."""
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import dask
+import dask.array as da
+import numpy as np
+import pytest
+from distributed import Client, LocalCluster
+
+import mcmd
+import mcmd.dask
+from conftest import cli_fill, read, same_bits, write
+
+H, W = 520, 610
+TILE = ["-o", "TILE_SIZE=65", "-o", "TILING=ALWAYS"]
+
+
+def raster(dtype="float32", nodata=-9999):
+    """Terrain with a void spanning several chunks of 128, blobs and scattered cells."""
+    y, x = np.mgrid[0:H, 0:W]
+    z = 600 + 250 * np.sin(x * 0.019) * np.cos(y * 0.023) + 90 * np.sin(0.05 * x + 0.03 * y) + 0.4 * x
+    void = (x - 300) ** 2 / 180.0 ** 2 + (y - 260) ** 2 / 120.0 ** 2 < 1
+    void |= (x - 60) ** 2 + (y - 450) ** 2 < 25 ** 2
+    void |= np.random.default_rng(3).random((H, W)) < 0.02
+    a = z.astype(dtype)
+    a[void] = nodata
+    return a
+
+
+def cli_result(tmp_path, a, nodata, *options):
+    src = write(tmp_path / "src.tif", a, nodata)
+    cli_fill(*TILE, *options, src, tmp_path / "cli.tif")
+    return src, read(tmp_path / "cli.tif")
+
+
+@pytest.mark.parametrize("dtype,nodata", [("float32", -9999), ("int16", -32768), ("uint16", 0)])
+def test_equals_cli_for_two_chunkings(tmp_path, dtype, nodata):
+    a = raster(dtype, nodata)
+    _, want = cli_result(tmp_path, a, nodata)
+    for chunks in (128, 200):
+        with dask.config.set(scheduler="threads"):
+            got = mcmd.dask.fill(da.from_array(a, chunks=chunks), nodata=nodata, tile_size=65,
+                                 tiling="ALWAYS").compute()
+        assert same_bits(got, want), f"chunks of {chunks}"
+
+
+def test_rough_fill_with_max_distance_equals_cli(tmp_path):
+    a = raster()
+    _, want = cli_result(tmp_path, a, -9999, "-rs", "auto", "-seed", "5", "-md", "40")
+    with dask.config.set(scheduler="threads"):
+        got = mcmd.dask.fill(da.from_array(a, chunks=150), nodata=-9999, rs="auto", seed=5, max_distance=40,
+                             tile_size=65, tiling="ALWAYS").compute()
+    assert same_bits(got, want)
+
+
+def test_small_raster_is_filled_whole_like_the_cli(tmp_path):
+    a = raster()[:200, :300].copy()
+    src = write(tmp_path / "small.tif", a, -9999)
+    cli_fill(src, tmp_path / "small_cli.tif")  # the default: filled whole
+    got = mcmd.dask.fill(da.from_array(a, chunks=64), nodata=-9999).compute(scheduler="threads")
+    assert same_bits(got, read(tmp_path / "small_cli.tif"))
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as c:
+        yield c
+
+
+def test_local_cluster_two_worker_counts(tmp_path, cluster):
+    a = raster()
+    _, want = cli_result(tmp_path, a, -9999)
+    with Client(cluster) as client:
+        for workers, chunks in ((2, 128), (1, 256)):
+            client.cluster.scale(workers)
+            client.wait_for_workers(workers)
+            got = mcmd.dask.fill(da.from_array(a, chunks=chunks), nodata=-9999, tile_size=65,
+                                 tiling="ALWAYS").compute()
+            assert same_bits(got, want), f"{workers} workers, chunks of {chunks}"
+        client.cluster.scale(2)
+        client.wait_for_workers(2)
+
+
+def test_a_killed_worker_is_retried_with_the_same_result(tmp_path, cluster):
+    a = raster()
+    _, want = cli_result(tmp_path, a, -9999)
+    with Client(cluster) as client:
+        client.wait_for_workers(2)
+        lazy = mcmd.dask.fill(da.from_array(a, chunks=128), nodata=-9999, tile_size=65, tiling="ALWAYS")
+        future = client.compute(lazy)
+        pids = client.run(os.getpid)
+        # Kill one worker once it holds results (its share must be computed again).
+        deadline = time.time() + 60
+        while time.time() < deadline and not any(client.who_has().values()):
+            time.sleep(0.05)
+        os.kill(next(iter(pids.values())), signal.SIGKILL)
+        got = future.result(timeout=240)
+        assert same_bits(got, want)
+        client.wait_for_workers(2)
+
+
+def test_dataarray_keeps_coordinates_and_nodata(tmp_path):
+    rioxarray = pytest.importorskip("rioxarray")
+    a = raster()
+    src, want = cli_result(tmp_path, a, -9999)
+    band = rioxarray.open_rasterio(src, chunks={"y": 128, "x": 128}, mask_and_scale=False).sel(band=1)
+    filled = mcmd.dask.fill(band, tile_size=65, tiling="ALWAYS")  # nodata from band.rio.nodata
+    assert filled.rio.crs == band.rio.crs and filled.rio.transform() == band.rio.transform()
+    assert filled.rio.nodata == -9999 and (filled.x == band.x).all()
+    assert same_bits(filled.compute(scheduler="threads").values, want)
+
+
+def test_bad_input_raises():
+    a = da.from_array(raster(), chunks=128)
+    with pytest.raises(ValueError, match="2-D"):
+        mcmd.dask.fill(a[None], nodata=-9999)
+    with pytest.raises(ValueError, match="complex"):
+        mcmd.dask.fill(a.astype(np.complex64), nodata=-9999)
+    with pytest.raises(ValueError, match="nothing marks the voids"):
+        mcmd.dask.fill(a.astype(np.int32))
+    with pytest.raises(ValueError, match="RS"):
+        mcmd.dask.fill(a, nodata=-9999, rs="rough")
+    with pytest.raises(ValueError, match="INNER_ONLY"):
+        mcmd.dask.fill(a, nodata=-9999, inner_only=True)
+    with pytest.raises(ValueError, match="mask"):
+        mcmd.dask.fill(a, mask=np.ones((3, 3), bool))
+    empty = da.full((300, 400), -9999.0, chunks=128)
+    with pytest.raises(mcmd.Error, match="no valid cell"):
+        mcmd.dask.fill(empty, nodata=-9999, tiling="ALWAYS", tile_size=65).compute(scheduler="threads")
+
+
+def run_module(*args):
+    return subprocess.run([sys.executable, "-m", "mcmd.dask", *map(str, args)], capture_output=True, text=True,
+                          timeout=240)
+
+
+def test_module_writes_the_cli_s_geotiff_and_zarr(tmp_path):
+    a = raster()
+    src, want = cli_result(tmp_path, a, -9999)
+    p = run_module(src, tmp_path / "dask.tif", "--workers", "2", "--chunk", "128", *TILE)
+    assert p.returncode == 0, p.stderr
+    assert "100 - done." in p.stdout
+    assert same_bits(read(tmp_path / "dask.tif"), want)
+    from osgeo import gdal
+    out, ref = gdal.Open(str(tmp_path / "dask.tif")), gdal.Open(src)
+    assert out.GetGeoTransform() == ref.GetGeoTransform() and out.GetProjection() == ref.GetProjection()
+    assert out.GetRasterBand(1).GetNoDataValue() == -9999
+    p = run_module(src, tmp_path / "dask.zarr", "--workers", "1", "-q", *TILE)
+    assert p.returncode == 0, p.stderr
+    import xarray
+    assert same_bits(xarray.open_zarr(tmp_path / "dask.zarr")["band_1"].values, want)
+    assert not [f for f in os.listdir(tmp_path) if "mcmd-tmp" in f]
+
+
+def test_module_errors_are_one_line_and_leave_nothing(tmp_path):
+    p = run_module(tmp_path / "missing.tif", tmp_path / "out.tif")
+    assert p.returncode == 1 and p.stderr.startswith("mcmd.dask: cannot open") and p.stderr.count("\n") == 1
+    src = write(tmp_path / "src.tif", raster(), -9999)
+    p = run_module(src, tmp_path / "out.tif", "-b", "3")
+    assert p.returncode == 1 and "band 3 does not exist" in p.stderr
+    p = run_module(src, tmp_path / "out.tif", "-rs", "rough", "--workers", "1")
+    assert p.returncode == 1 and p.stderr.startswith("mcmd.dask: ") and p.stderr.count("\n") == 1, p.stderr
+    assert not os.path.exists(tmp_path / "out.tif")
+    assert not [f for f in os.listdir(tmp_path) if "mcmd-tmp" in f]
