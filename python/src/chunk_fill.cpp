@@ -137,7 +137,8 @@ py::tuple solution_tuple(ChunkSolution&& s) {
   for (WindowSolution& w : s.windows)
     windows.append(py::make_tuple(w.tx, w.ty, w.x0, w.x1, w.y0, w.y1, to_numpy(std::move(w.z)),
                                   to_numpy(std::move(w.write))));
-  for (ComponentSolution& c : s.components) components.append(py::make_tuple(c.index, to_numpy(std::move(c.values))));
+  for (ComponentSolution& c : s.components)
+    components.append(py::make_tuple(c.index, py::make_tuple(c.x0, c.y0, c.x1, c.y1), to_numpy(std::move(c.values))));
   return py::make_tuple(windows, components);
 }
 
@@ -151,7 +152,8 @@ ChunkSolution solution_of(const py::tuple& t) {
   }
   for (const py::handle& h : t[1].cast<py::list>()) {
     const auto c = h.cast<py::tuple>();
-    s.components.push_back(ComponentSolution{c[0].cast<std::size_t>(), from_numpy<double>(c[1])});
+    const auto [x0, y0, x1, y1] = c[1].cast<std::tuple<int, int, int, int>>();
+    s.components.push_back(ComponentSolution{c[0].cast<std::size_t>(), x0, y0, x1, y1, from_numpy<double>(c[2])});
   }
   return s;
 }
@@ -229,6 +231,12 @@ void register_chunk_fill(py::module_& m) {
       },
       py::arg("plan"), py::arg("block"), py::arg("valid"), py::arg("gdal_type"), py::arg("nodata"),
       py::arg("origin"), py::arg("own"), "Step 3: the windows and small voids a chunk owns, solved.");
+  m.def(
+      "solution_part",
+      [](const py::tuple& solution, std::tuple<int, int, int, int> other) {
+        return solution_tuple(solution_part(solution_of(solution), rect_of(other)));
+      },
+      py::arg("solution"), py::arg("other"), "The part of a chunk's solution that chunk `other`'s blend needs.");
   m.def(
       "blend_chunk",
       [](const Plan& plan, py::array out, std::optional<py::array> valid, const std::string& gdal_type,

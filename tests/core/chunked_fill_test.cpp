@@ -68,11 +68,16 @@ std::vector<double> chunked(MemRaster& r, const FillParams& params, const Tiling
   std::shuffle(order.begin(), order.end(), rng);
   for (std::size_t k : order) {
     const int i = static_cast<int>(k) % nx, j = static_cast<int>(k) / nx;
-    std::vector<const ChunkSolution*> around;
+    // Its own solution, and what each neighbour sends of its own.
+    std::vector<ChunkSolution> parts;
+    parts.reserve(8);
+    std::vector<const ChunkSolution*> around{&solutions[k]};
     for (int dj = -1; dj <= 1; ++dj)
       for (int di = -1; di <= 1; ++di)
-        if (i + di >= 0 && i + di < nx && j + dj >= 0 && j + dj < ny)
-          around.push_back(&solutions[static_cast<std::size_t>(j + dj) * nx + (i + di)]);
+        if ((di || dj) && i + di >= 0 && i + di < nx && j + dj >= 0 && j + dj < ny) {
+          parts.push_back(solution_part(solutions[static_cast<std::size_t>(j + dj) * nx + (i + di)], chunks[k]));
+          around.push_back(&parts.back());
+        }
     blend_chunk(access, plan, around, chunks[k]);
   }
   return r.out;

@@ -86,6 +86,7 @@ struct WindowSolution {
 };
 struct ComponentSolution {
   std::size_t index = 0;      // among the plan's small components
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // its bounding box, inclusive
   std::vector<double> values; // its cells, run after run
 };
 struct ChunkSolution {
@@ -97,9 +98,14 @@ struct ChunkSolution {
 ChunkSolution solve_chunk(const RasterAccess& raster, const ChunkedPlan& plan, CellRect own,
                           const ProgressFn& progress = {});
 
+// The part of a chunk's solution that the blend of chunk `other` needs: the
+// windows whose output region meets it and the components whose box does
+// (what a neighbour sends, rather than its whole solution).
+ChunkSolution solution_part(const ChunkSolution& s, CellRect other);
+
 // Step 4: writes the filled cells of `own` through out.write (void cells
 // only; nothing outside `own`). `around` holds the solutions of the chunk and
-// of its neighbours (any order; more is harmless).
+// of its neighbours, or their parts for this chunk (any order; more is harmless).
 void blend_chunk(const RasterAccess& out, const ChunkedPlan& plan, const std::vector<const ChunkSolution*>& around,
                  CellRect own);
 

@@ -216,7 +216,8 @@ ChunkSolution solve_chunk(const RasterAccess& raster, const ChunkedPlan& plan, C
     const std::shared_ptr<detail::JobInput> in = detail::read_input(raster, tp, job);
     detail::JobResult r = detail::solve_job(raster, tp, job, *in, st.max_distance, progress);
     if (job.component) {
-      out.components.push_back(ComponentSolution{job.index, std::move(r.values)});
+      const detail::Box& b = tp.small[job.index].box;
+      out.components.push_back(ComponentSolution{job.index, b.x0, b.y0, b.x1, b.y1, std::move(r.values)});
     } else {
       WindowResult& w = r.window;
       out.windows.push_back(WindowSolution{w.tx, w.ty, w.xs.begin, w.xs.end, w.ys.begin, w.ys.end, std::move(w.z),
@@ -224,6 +225,18 @@ ChunkSolution solve_chunk(const RasterAccess& raster, const ChunkedPlan& plan, C
     }
   }
   return out;
+}
+
+ChunkSolution solution_part(const ChunkSolution& s, CellRect other) {
+  const auto meets = [&other](int x0, int x1, int y0, int y1) {  // [x0, x1) × [y0, y1)
+    return x0 < other.x0 + other.w && x1 > other.x0 && y0 < other.y0 + other.h && y1 > other.y0;
+  };
+  ChunkSolution part;
+  for (const WindowSolution& w : s.windows)
+    if (meets(w.x0, w.x1, w.y0, w.y1)) part.windows.push_back(w);
+  for (const ComponentSolution& c : s.components)
+    if (meets(c.x0, c.x1 + 1, c.y0, c.y1 + 1)) part.components.push_back(c);
+  return part;
 }
 
 void blend_chunk(const RasterAccess& out, const ChunkedPlan& plan, const std::vector<const ChunkSolution*>& around,

@@ -8,7 +8,8 @@ of the tile step (tile size - 1). The graph has four steps (docs/dask.md):
 2. one task gathers the summaries; each worker builds the plan from them once
    (the guide's solve, the small voids, the list of windows);
 3. per chunk, the windows of the tiles it owns and its small voids, solved;
-4. per chunk, its cells blended from its own and its 8 neighbours' solutions.
+4. per chunk, its cells blended from its own solution and the parts of its
+   8 neighbours' that reach into it (cut where they lie: only those travel).
 
 For the same options (tile size included), the result is bit-identical to
 ``mcmd_fillnodata``'s on the same raster, whatever the chunking, the number
@@ -194,8 +195,8 @@ def _chunked(arr: da.Array, marr: Optional[da.Array], spec: _steps.Spec, side: i
     for j in range(ny):
         row = []
         for i in range(nx):
-            around = [solved[b][a] for b in range(max(0, j - 1), min(ny, j + 2))
-                      for a in range(max(0, i - 1), min(nx, i + 2))]
+            around = [solved[b][a] if (a, b) == (i, j) else delayed(_steps.part)(solved[b][a], own[j][i])
+                      for b in range(max(0, j - 1), min(ny, j + 2)) for a in range(max(0, i - 1), min(nx, i + 2))]
             task = delayed(_steps.blend)(gathered, ob[j, i], mob[j, i], spec, own[j][i], *around)
             row.append(da.from_delayed(task, shape=(rows[j], cols[i]), dtype=arr.dtype))
         out.append(row)

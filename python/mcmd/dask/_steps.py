@@ -70,6 +70,11 @@ def solve(summaries: list, block, mask, spec: Spec, origin, own) -> tuple:
                              tuple(origin), tuple(own))
 
 
+def part(solution: tuple, other) -> tuple:
+    """What a chunk's neighbour needs of its solution (run where it lies: only this crosses)."""
+    return _mcmd.solution_part(solution, tuple(other))
+
+
 def blend(summaries: list, block, mask, spec: Spec, own, *around: tuple) -> np.ndarray:
     """Step 4: the chunk's cells, filled from the solutions around it."""
     out = _cells(block, spec)
