@@ -11,7 +11,8 @@ dask.distributed cluster (a LocalCluster of N worker processes by default,
 the scheduler at ADDRESS when given), and writes DST as a tiled GeoTIFF, or
 as Zarr when DST ends in .zarr. The result is the CLI's, bit for bit
 (mcmd_fillnodata SRC DST with the same options). The output is written under
-a temporary name beside DST and renamed at the end: a failed or interrupted
+a temporary name beside DST and renamed at the end; Dask's progress bar
+shows the chunks computed: a failed or interrupted
 run leaves nothing behind. Errors: one line on stderr, exit status 1 (2 for
 bad arguments).
 """
@@ -21,6 +22,7 @@ import argparse
 import os
 import shutil
 import sys
+import threading
 import warnings
 
 from .. import Error
@@ -60,7 +62,10 @@ def parse(argv):
 
 def main(argv=None) -> int:
     a = parse(argv)
-    warnings.filterwarnings("ignore", message="Dataset has no geotransform")  # rasterio's, for plain grids
+    # rasterio's warning for plain grids, here and in the LocalCluster's workers
+    warnings.filterwarnings("ignore", message="Dataset has no geotransform")
+    os.environ["PYTHONWARNINGS"] = ",".join(filter(None, [os.environ.get("PYTHONWARNINGS"),
+                                                          "ignore:Dataset has no geotransform"]))
     try:
         run(a)
     except (Error, ValueError, OSError, RuntimeError) as e:
@@ -134,23 +139,9 @@ def fill_bands(a, src, bands):
     return filled
 
 
-def progress_bar(done: int, total: int, quiet: bool) -> None:
-    """GDAL's text progress (0...10...20...100 - done.), as the CLI prints it."""
-    if quiet:
-        return
-    if done == 0:
-        sys.stdout.write("0")
-    step = lambda n: (40 * n) // max(total, 1)  # noqa: E731  (40 marks: a number every 10 %)
-    for k in range(step(done - 1) + 1 if done else 1, step(done) + 1):
-        sys.stdout.write(f"{k // 4 * 10}" if k % 4 == 0 else ".")
-    if done == total:
-        sys.stdout.write(" - done.\n")
-    sys.stdout.flush()
-
-
 def write_geotiff(client, filled, src, bands, tmp, creation, quiet) -> None:
     """Chunks are written as they arrive (the client holds one at a time)."""
-    from distributed import as_completed
+    from distributed import as_completed, progress
     from osgeo import gdal
     import numpy as np
     W, H, n = src.RasterXSize, src.RasterYSize, src.RasterCount
@@ -178,12 +169,25 @@ def write_geotiff(client, filled, src, bands, tmp, creation, quiet) -> None:
             pieces.append((b, int(offsets[1][i]), int(offsets[0][j]), data.blocks[j, i]))
     futures = client.compute([p[3] for p in pieces])
     where = {f.key: p[:3] for f, p in zip(futures, pieces)}
-    progress_bar(0, len(futures), quiet)
-    for k, future in enumerate(as_completed(futures), 1):
-        b, x0, y0 = where[future.key]
-        out.GetRasterBand(b).WriteArray(future.result(), x0, y0)
-        future.release()
-        progress_bar(k, len(futures), quiet)
+    failed = []
+
+    def write_all():  # GDAL's dataset stays on this one thread
+        try:
+            for future in as_completed(futures):
+                b, x0, y0 = where[future.key]
+                out.GetRasterBand(b).WriteArray(future.result(), x0, y0)
+                future.release()
+        except BaseException as e:  # noqa: BLE001  (re-raised on the calling thread)
+            failed.append(e)
+
+    writer = threading.Thread(target=write_all, name="mcmd.dask writer")
+    writer.start()
+    if not quiet:
+        progress(futures)  # Dask's text progress bar, until every chunk is computed
+        print()
+    writer.join()
+    if failed:
+        raise failed[0]
     out.FlushCache()
     out = None
 
