@@ -863,8 +863,8 @@ def cached_fills(specs: list[FillSpec], key: str, force: bool = False, log=print
     the times compared (mcmd vs GDAL) come from the same minutes of the same
     machine, not from different runs or from a drift between back-to-back
     repeats of one tool. A fill stops at its first failure; failed and
-    timed-out runs are cached too. wall_s is the median, rss_mb the maximum,
-    walls all."""
+    timed-out runs are cached too. wall_s and cpu_s (user + system) are the
+    medians, rss_mb the maximum, walls all."""
     cached = [load_json(sp.res_path) for sp in specs]
     if not force and all(c and c.get("key") == sp.full_key(key) for c, sp in zip(cached, specs)):
         return cached
@@ -885,10 +885,13 @@ def _finish(sp: FillSpec, full_key: str, tries: list[dict], log, mem_limit_mb) -
     """Aggregate the tries of one fill (median wall time, max RSS), score the
     output, cache and return the result."""
     r = dict(tries[-1])
+    cpu = lambda t: t.get("user_s", 0.0) + t.get("sys_s", 0.0)  # noqa: E731
+    r["cpu_s"] = cpu(r)
     if len(tries) > 1 and all(t["rc"] == 0 and not t["timed_out"] for t in tries):
         walls = [t["wall_s"] for t in tries]
         r["walls"] = walls
         r["wall_s"] = float(np.median(walls))
+        r["cpu_s"] = float(np.median([cpu(t) for t in tries]))
         r["rss_mb"] = max(t.get("rss_mb", 0) for t in tries)
     r["key"] = full_key
     r["ok"] = (not r["timed_out"]) and r["rc"] == 0 and os.path.exists(sp.out_path)
