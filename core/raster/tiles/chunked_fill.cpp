@@ -16,6 +16,14 @@
 
 namespace mcmd {
 
+struct ChunkedPlan::State {
+  detail::TilePlan plan;
+  RasterFillStats stats;
+  bool voids = false;
+  double max_distance = 0.0;
+  std::vector<std::pair<int, int>> component_centres;  // of their grids: who solves each
+};
+
 namespace {
 
 // Moments travel as 9 doubles.
@@ -26,18 +34,6 @@ void to_doubles(const CoarseGuide::Moments& m, double* d) {
 CoarseGuide::Moments from_doubles(const double* d) {
   return CoarseGuide::Moments{d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7], d[8]};
 }
-
-}  // namespace
-
-struct ChunkedPlan::State {
-  detail::TilePlan plan;
-  RasterFillStats stats;
-  bool voids = false;
-  double max_distance = 0.0;
-  std::vector<std::pair<int, int>> component_centres;  // of their grids: who solves each
-};
-
-namespace {
 
 TileLayout layout_of(int width, int height, const TilingParams& tiling) {
   return TileLayout(width, height, effective_tile_side(width, height, tiling.tile_side));
