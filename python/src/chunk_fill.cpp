@@ -135,8 +135,8 @@ ChunkSummary summary_of(const py::dict& d) {
 py::tuple solution_tuple(ChunkSolution&& s) {
   py::list windows, components;
   for (WindowSolution& w : s.windows)
-    windows.append(py::make_tuple(w.tx, w.ty, w.x0, w.x1, w.y0, w.y1, to_numpy(std::move(w.z)),
-                                  to_numpy(std::move(w.write))));
+    windows.append(py::make_tuple(w.tx, w.ty, w.x0, w.x1, w.y0, w.y1, to_numpy(std::move(w.cells)),
+                                  to_numpy(std::move(w.z))));
   for (ComponentSolution& c : s.components)
     components.append(py::make_tuple(c.index, py::make_tuple(c.x0, c.y0, c.x1, c.y1), to_numpy(std::move(c.values))));
   return py::make_tuple(windows, components);
@@ -147,8 +147,8 @@ ChunkSolution solution_of(const py::tuple& t) {
   for (const py::handle& h : t[0].cast<py::list>()) {
     const auto w = h.cast<py::tuple>();
     s.windows.push_back(WindowSolution{w[0].cast<int>(), w[1].cast<int>(), w[2].cast<int>(), w[3].cast<int>(),
-                                       w[4].cast<int>(), w[5].cast<int>(), from_numpy<double>(w[6]),
-                                       from_numpy<std::uint8_t>(w[7])});
+                                       w[4].cast<int>(), w[5].cast<int>(), from_numpy<std::uint8_t>(w[6]),
+                                       from_numpy<double>(w[7])});
   }
   for (const py::handle& h : t[1].cast<py::list>()) {
     const auto c = h.cast<py::tuple>();

@@ -78,11 +78,13 @@ class ChunkedPlan {
   std::unique_ptr<State> state_;
 };
 
+// A window's fill over its tile's output region, kept only where it can
+// matter: at the region's void cells (a blend writes nothing else).
 struct WindowSolution {
   int tx = 0, ty = 0;
   int x0 = 0, x1 = 0, y0 = 0, y1 = 0;  // the tile's output region
-  std::vector<double> z;
-  std::vector<std::uint8_t> write;  // 1: a void cell the window would write
+  std::vector<std::uint8_t> cells;     // per region cell: 0 known, 1 void, 2 void this window writes
+  std::vector<double> z;               // the values of the void cells, row-major
 };
 struct ComponentSolution {
   std::size_t index = 0;      // among the plan's small components

@@ -119,6 +119,36 @@ BlockWriter clipped_writer(const RasterAccess& out, const CellRect& own) {
   };
 }
 
+// A window's result kept at the region's void cells only.
+WindowSolution compact(const WindowResult& w, const WindowInput& in) {
+  WindowSolution s{w.tx, w.ty, w.xs.begin, w.xs.end, w.ys.begin, w.ys.end, {}, {}};
+  s.cells.resize(w.z.size());
+  std::size_t i = 0;
+  for (int y = w.ys.begin; y < w.ys.end; ++y)
+    for (int x = w.xs.begin; x < w.xs.end; ++x, ++i) {
+      const bool known = in.valid[static_cast<std::size_t>(y - in.rect.y0) * in.rect.w + (x - in.rect.x0)];
+      s.cells[i] = known ? 0 : (w.write[i] ? 2 : 1);
+      if (!known) s.z.push_back(w.z[i]);
+    }
+  return s;
+}
+
+// The window's result back over its whole region (0 at known cells).
+WindowResult expanded(const WindowSolution& s) {
+  WindowResult r;
+  r.tx = s.tx, r.ty = s.ty;
+  r.xs = Range{s.x0, s.x1}, r.ys = Range{s.y0, s.y1};
+  r.z.assign(s.cells.size(), 0.0);
+  r.write.assign(s.cells.size(), 0);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < s.cells.size(); ++i) {
+    if (!s.cells[i]) continue;
+    r.z[i] = s.z.at(k++);
+    r.write[i] = s.cells[i] == 2;
+  }
+  return r;
+}
+
 }  // namespace
 
 ChunkGrid chunk_grid(int width, int height, const TilingParams& tiling) {
@@ -215,9 +245,7 @@ ChunkSolution solve_chunk(const RasterAccess& raster, const ChunkedPlan& plan, C
       const detail::Box& b = tp.small[job.index].box;
       out.components.push_back(ComponentSolution{job.index, b.x0, b.y0, b.x1, b.y1, std::move(r.values)});
     } else {
-      WindowResult& w = r.window;
-      out.windows.push_back(WindowSolution{w.tx, w.ty, w.xs.begin, w.xs.end, w.ys.begin, w.ys.end, std::move(w.z),
-                                           std::move(w.write)});
+      out.windows.push_back(compact(r.window, in->window));
     }
   }
   return out;
@@ -257,12 +285,7 @@ void blend_chunk(const RasterAccess& out, const ChunkedPlan& plan, const std::ve
   int rows_ended = 0;
   for (const WindowSolution* w : windows) {
     for (; rows_ended < w->ty; ++rows_ended) blender.end_row(rows_ended);
-    WindowResult r;
-    r.tx = w->tx, r.ty = w->ty;
-    r.xs = Range{w->x0, w->x1}, r.ys = Range{w->y0, w->y1};
-    r.z = w->z;
-    r.write = w->write;
-    blender.add(r);
+    blender.add(expanded(*w));
   }
   for (; rows_ended < tp.layout.y.count(); ++rows_ended) blender.end_row(rows_ended);
 
