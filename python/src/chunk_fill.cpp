@@ -14,6 +14,8 @@
 #include "cpl_string.h"
 #include "lib/band_access.hpp"
 #include "lib/fill_band.hpp"
+#include "lib/errors.hpp"
+#include "lib/void_cap.hpp"
 #include "mcmd/chunked_fill.hpp"
 #include "mcmd/fill_raster.hpp"
 
@@ -32,6 +34,7 @@ gdal::Options parsed(const std::vector<std::string>& options) {
 TilingParams tiling_for(const gdal::Options& o) {
   TilingParams t = gdal::tiling_of(o);
   t.always_tile = true;  // the chunked fill is the tiled fill
+  t.max_void_cells = gdal::void_cap_cells(o, nullptr);  // an array has no cell size: cells only
   return t;
 }
 
@@ -183,6 +186,17 @@ void register_chunk_fill(py::module_& m) {
       },
       py::arg("width"), py::arg("height"), py::arg("options"),
       "Whether the CLI fills such a raster whole rather than through tiles.");
+  m.def(
+      "max_void_cells",
+      [](const std::vector<std::string>& options, const std::string& path) {
+        const gdal::Options o = parsed(options);
+        cli::ErrorLog log;
+        cli::DatasetPtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+        if (!ds) throw gdal::Failure(CPLE_OpenFailed, "cannot open '" + path + "'");
+        return gdal::void_cap_cells(o, ds.get());
+      },
+      py::arg("options"), py::arg("path"),
+      "MAX_VOID in cells of the raster at `path` (an area converted as the CLI converts it); 0: no cap.");
   m.def(
       "summarize_chunk",
       [](py::array block, std::optional<py::array> valid, const std::string& gdal_type, py::object nodata,

@@ -92,4 +92,10 @@ inline MemRaster make_raster(int w, int h, double drop = 0.05) {
   return r;
 }
 
+inline void punch_disc(MemRaster& r, double cx, double cy, double radius) {
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x)
+      if (std::hypot(x - cx, y - cy) <= radius) r.valid[r.at(x, y)] = 0;
+}
+
 }  // namespace mcmd::test

@@ -26,6 +26,7 @@
 using namespace mcmd;
 using mcmd::test::MemRaster;
 using mcmd::test::make_raster;
+using mcmd::test::punch_disc;
 using mcmd::test::terrain;
 using mcmd::test::terrain_raster;
 
@@ -39,11 +40,6 @@ struct Recorded {
   Recorded(const Recorded&) = delete;
 };
 
-void punch_disc(MemRaster& r, double cx, double cy, double radius) {
-  for (int y = 0; y < r.h; ++y)
-    for (int x = 0; x < r.w; ++x)
-      if (std::hypot(x - cx, y - cy) <= radius) r.valid[r.at(x, y)] = 0;
-}
 
 std::vector<double> run(MemRaster& r, int tile, int threads, const RasterFillHooks& hooks = {}) {
   TilingParams tp;

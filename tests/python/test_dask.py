@@ -59,6 +59,18 @@ def test_rough_fill_with_max_distance_equals_cli(tmp_path):
     assert same_bits(got, want)
 
 
+@pytest.mark.parametrize("options", [("-inner",), ("-maxvoid", "2000")])
+def test_voids_left_unfilled_as_by_the_cli(tmp_path, options):
+    a = raster()
+    a[200:260, :40] = -9999  # a void on the border, which -inner leaves
+    _, want = cli_result(tmp_path, a, -9999, *options)
+    assert (want == -9999).any() and (want != a).any()
+    kwargs = {"inner_only": True} if options[0] == "-inner" else {"max_void": 2000}
+    got = mcmd.dask.fill(da.from_array(a, chunks=128), nodata=-9999, tile_size=65, tiling="ALWAYS",
+                         **kwargs).compute(scheduler="threads")
+    assert same_bits(got, want)
+
+
 def test_small_raster_is_filled_whole_like_the_cli(tmp_path):
     a = raster()[:200, :300].copy()
     src = write(tmp_path / "small.tif", a, -9999)
@@ -126,8 +138,10 @@ def test_bad_input_raises():
         mcmd.dask.fill(a.astype(np.int32))
     with pytest.raises(ValueError, match="RS"):
         mcmd.dask.fill(a, nodata=-9999, rs="rough")
-    with pytest.raises(ValueError, match="INNER_ONLY"):
-        mcmd.dask.fill(a, nodata=-9999, inner_only=True)
+    with pytest.raises(ValueError, match="FILL_FROM"):
+        mcmd.dask.fill(a, nodata=-9999, fill_from="other.tif")
+    with pytest.raises(ValueError, match="in cells"):
+        mcmd.dask.fill(a, nodata=-9999, max_void="3km2")
     with pytest.raises(ValueError, match="mask"):
         mcmd.dask.fill(a, mask=np.ones((3, 3), bool))
     empty = da.full((300, 400), -9999.0, chunks=128)
@@ -168,3 +182,18 @@ def test_module_errors_are_one_line_and_leave_nothing(tmp_path):
     assert p.returncode == 1 and p.stderr.startswith("mcmd.dask: ") and p.stderr.count("\n") == 1, p.stderr
     assert not os.path.exists(tmp_path / "out.tif")
     assert not [f for f in os.listdir(tmp_path) if "mcmd-tmp" in f]
+
+
+def test_module_void_cap_as_an_area_is_the_cli_s(tmp_path):
+    from osgeo import gdal, osr
+    src = write(tmp_path / "utm.tif", raster(), -9999)
+    utm = osr.SpatialReference()
+    utm.ImportFromEPSG(32611)
+    ds = gdal.Open(src, gdal.GA_Update)
+    ds.SetProjection(utm.ExportToWkt())  # 30 m cells in metres
+    ds = None
+    cli_fill(*TILE, "-maxvoid", "1.5km2", src, tmp_path / "cli.tif")  # 1666 cells
+    want = read(tmp_path / "cli.tif")
+    p = run_module(src, tmp_path / "capped.tif", "--workers", "1", "-q", "-maxvoid", "1.5km2", *TILE)
+    assert p.returncode == 0, p.stderr
+    assert same_bits(read(tmp_path / "capped.tif"), want) and (want == -9999).any()

@@ -14,8 +14,8 @@
 // The result is bit for bit fill_raster's tiled path (TilingParams::
 // always_tile, the same tile side), whatever the chunking and the order.
 // Steps 1 and 3 read only cells within chunk_margin() of their chunk.
-// Not handled: lines, -inner / -maxvoid, a second DEM, values beyond ±1e100
-// (std::invalid_argument says so).
+// Not handled: lines, a second DEM, values beyond ±1e100 (the plan throws
+// std::invalid_argument for the last; the others are not asked here).
 #pragma once
 
 #include <cstddef>

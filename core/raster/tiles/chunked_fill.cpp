@@ -9,6 +9,7 @@
 
 #include "mcmd/fill_raster.hpp"
 #include "raster/frame.hpp"
+#include "raster/void_selection.hpp"
 #include "raster/tiles/blend.hpp"
 #include "raster/tiles/lone_void.hpp"
 #include "raster/tiles/tile_jobs.hpp"
@@ -21,6 +22,7 @@ struct ChunkedPlan::State {
   RasterFillStats stats;
   bool voids = false;
   double max_distance = 0.0;
+  detail::LeftVoids left;  // -inner, -maxvoid
   std::vector<std::pair<int, int>> component_centres;  // of their grids: who solves each
 };
 
@@ -40,11 +42,6 @@ TileLayout layout_of(int width, int height, const TilingParams& tiling) {
 }
 
 bool inside(int x, int y, const CellRect& r) { return x >= r.x0 && x < r.x0 + r.w && y >= r.y0 && y < r.y0 + r.h; }
-
-void check_supported(const TilingParams& tiling) {
-  if (tiling.inner_only || tiling.max_void_cells > 0)
-    throw std::invalid_argument("a chunked fill cannot leave voids unfilled (INNER_ONLY, MAX_VOID): fill the file");
-}
 
 // The cells of `r` in one read.
 struct Cells {
@@ -187,7 +184,6 @@ ChunkSummary summarize_chunk(const RasterAccess& raster, const TilingParams& til
 ChunkedPlan::ChunkedPlan(int width, int height, const FillParams& params, const TilingParams& tiling,
                          const std::vector<ChunkSummary>& summaries)
     : state_(std::make_unique<State>()) {
-  check_supported(tiling);
   detail::PlanParts parts;
   parts.width = width;
   parts.height = height;
@@ -207,7 +203,7 @@ ChunkedPlan::ChunkedPlan(int width, int height, const FillParams& params, const 
   State& st = *state_;
   st.max_distance = tiling.max_distance;
   try {
-    st.voids = detail::plan_from_parts(parts, params, tiling, st.stats, st.plan);
+    st.voids = detail::plan_from_parts(parts, params, tiling, st.stats, st.plan, st.left);
   } catch (const detail::ExtremeRange&) {
     throw std::invalid_argument("known values beyond ±1e100 need the file's fill (a chunked fill has no frame)");
   }
@@ -268,7 +264,8 @@ void blend_chunk(const RasterAccess& out, const ChunkedPlan& plan, const std::ve
   const ChunkedPlan::State& st = plan.state();
   if (!st.voids) return;
   const detail::TilePlan& tp = st.plan;
-  const BlockWriter write = clipped_writer(out, own);
+  const RasterAccess selected = st.left.empty() ? out : detail::without_left_voids(out, st.left);
+  const BlockWriter write = clipped_writer(selected, own);
   // The windows whose output region meets the chunk, in the tiled fill's
   // order (row-major), each once.
   std::vector<const WindowSolution*> windows;

@@ -140,15 +140,16 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
 }
 
 bool plan_from_parts(const PlanParts& parts, const FillParams& params, const TilingParams& tiling,
-                     RasterFillStats& stats, TilePlan& plan) {
+                     RasterFillStats& stats, TilePlan& plan, LeftVoids& left) {
   start_plan(parts.width, parts.height, tiling, stats, plan);
   if (!plan.single) parts.set_guide(plan.guide);
   std::optional<ComponentFinder> finder = component_finder(plan, params, tiling);
   const RasterAccess pattern = void_pattern(parts.width, parts.height, parts.voids);
-  ScanResult scan = scan_raster(pattern, plan.layout, nullptr, {}, finder ? &*finder : nullptr);
+  left = selects_voids(tiling) ? find_left_voids(pattern, tiling) : LeftVoids{};
+  ScanResult scan = scan_raster(pattern, plan.layout, nullptr, {}, finder ? &*finder : nullptr, &left);
   scan.lo = parts.lo;
   scan.hi = parts.hi;
-  return finish_plan(pattern, params, tiling, {}, stats, plan, LeftVoids{}, scan, finder);
+  return finish_plan(pattern, params, tiling, {}, stats, plan, left, scan, finder);
 }
 
 }  // namespace mcmd::detail

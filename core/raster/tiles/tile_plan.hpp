@@ -59,9 +59,10 @@ struct PlanParts {
 };
 
 // The plan plan_tiles makes of the raster these parts were gathered from
-// (same guide, components and jobs; no lines, no voids left). The raster must
-// have a void and a known cell (else returns false / throws as plan_tiles).
+// (same guide, components and jobs; no lines), and the voids `tiling` leaves
+// unfilled (found as fill_raster finds them). The raster must have a void and
+// a known cell (else returns false / throws as plan_tiles).
 bool plan_from_parts(const PlanParts& parts, const FillParams& params, const TilingParams& tiling,
-                     RasterFillStats& stats, TilePlan& plan);
+                     RasterFillStats& stats, TilePlan& plan, LeftVoids& left);
 
 }  // namespace mcmd::detail

@@ -34,7 +34,7 @@ from . import _steps
 __all__ = ["fill"]
 
 # Options the chunked fill cannot honour: they judge or read the raster as a whole.
-_WHOLE_RASTER_OPTIONS = {"INNER_ONLY", "MAX_VOID", "FILL_FROM", "FILL_FROM_RESAMPLING", "RIVERS", "RIDGES"}
+_WHOLE_RASTER_OPTIONS = {"FILL_FROM", "FILL_FROM_RESAMPLING", "RIVERS", "RIDGES"}
 
 
 def fill(data: Any, mask: Any = None, nodata: int | float | None = None, *, method: str = "mcmd",
@@ -53,9 +53,10 @@ def fill(data: Any, mask: Any = None, nodata: int | float | None = None, *, meth
     nodata : number, optional
         Cells equal to it are voids.
     method, rs, seed, max_distance, **options
-        As for :func:`mcmd.fill` (``tile_size=``, ``tiling=``, ``H=``...).
-        ``inner_only``, ``max_void``, ``fill_from``, ``rivers`` and
-        ``ridges`` judge the raster whole: use :func:`mcmd.fill_file`.
+        As for :func:`mcmd.fill` (``tile_size=``, ``tiling=``, ``H=``,
+        ``inner_only=True``, ``max_void=5000`` in cells...). ``fill_from``,
+        ``rivers`` and ``ridges`` read other files whole: use
+        :func:`mcmd.fill_file`.
     chunks : int, optional
         Side of the fill's chunks, rounded up to a multiple of the tile step
         (default: the input's first chunk, rounded likewise). The data are
@@ -95,8 +96,8 @@ def fill(data: Any, mask: Any = None, nodata: int | float | None = None, *, meth
     opts = _options.fill_options(options, named, caller="mcmd.dask.fill")
     for o in opts:
         if o.split("=", 1)[0].upper() in _WHOLE_RASTER_OPTIONS:
-            raise ValueError(f"mcmd.dask.fill cannot use {o.split('=', 1)[0].upper()}: it judges the raster whole "
-                             f"(use mcmd.fill_file)")
+            raise ValueError(f"mcmd.dask.fill cannot use {o.split('=', 1)[0].upper()}: it reads another file "
+                             f"whole (use mcmd.fill_file)")
     height, width = arr.shape
     spec = _steps.Spec(width, height, arr.dtype.name if arr.dtype.isnative else arr.dtype.str, gdal_type, nd,
                        opts, dask.base.tokenize(arr, marr, gdal_type, nd, opts))

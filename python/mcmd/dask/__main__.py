@@ -2,7 +2,8 @@
 
     python3 -m mcmd.dask SRC DST [--workers N] [--threads-per-worker T]
         [--scheduler ADDRESS] [--chunk CELLS] [-b BAND]... [-md DIST]
-        [-rs R|auto] [-seed S] [-method M] [-tile T] [-o NAME=VALUE]...
+        [-rs R|auto] [-seed S] [-method M] [-tile T] [-inner] [-maxvoid N]
+        [-o NAME=VALUE]...
         [-co NAME=VALUE]... [-q]
 
 Reads SRC with rioxarray (chunked: each worker reads its blocks), fills every
@@ -42,6 +43,8 @@ def parse(argv):
     ap.add_argument("-b", dest="bands", type=int, action="append", help="band to fill (repeatable)")
     for flag, name in _FLAG_OPTIONS.items():
         ap.add_argument(flag, dest=name, help=f"as mcmd_fillnodata {flag}")
+    ap.add_argument("-inner", action="store_true", help="as mcmd_fillnodata -inner")
+    ap.add_argument("-maxvoid", help="as mcmd_fillnodata -maxvoid (cells or an area)")
     ap.add_argument("-o", dest="options", action="append", default=[], help="NAME=VALUE library option")
     ap.add_argument("-co", dest="creation", action="append", default=[], help="GeoTIFF creation option")
     ap.add_argument("-q", dest="quiet", action="store_true", help="no progress bar")
@@ -52,6 +55,10 @@ def parse(argv):
     for flag, name in _FLAG_OPTIONS.items():
         if getattr(a, name) is not None:
             a.fill_options[name.lower()] = getattr(a, name)
+    if a.inner:
+        a.fill_options["inner_only"] = True
+    if a.maxvoid is not None:
+        a.fill_options["max_void"] = a.maxvoid
     for o in a.options:
         if "=" not in o:
             ap.error(f"-o expects NAME=VALUE, got {o!r}")
@@ -119,10 +126,17 @@ def run(a) -> None:
 
 
 def check_options(a, src) -> None:
-    """A bad option fails here, with the CLI's message."""
+    """A bad option fails here, with the CLI's message. A void cap given as
+    an area becomes cells of SRC, as the CLI converts it."""
     from .. import _options
-    from .._mcmd import chunk_grid
-    chunk_grid(src.RasterXSize, src.RasterYSize, _options.fill_options(dict(a.fill_options), caller="mcmd.dask"))
+    from .._mcmd import chunk_grid, max_void_cells
+    options = _options.fill_options(dict(a.fill_options), caller="mcmd.dask")
+    cells = max_void_cells(options, a.src)
+    if cells:
+        a.fill_options = {k: v for k, v in a.fill_options.items() if k.upper() not in ("MAX_VOID", "MAXVOID")}
+        a.fill_options["max_void"] = f"{cells}cells"
+        options = _options.fill_options(dict(a.fill_options), caller="mcmd.dask")
+    chunk_grid(src.RasterXSize, src.RasterYSize, options)
 
 
 def fill_bands(a, src, bands):
