@@ -9,9 +9,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "arguments.hpp"
 #include "array_fill.hpp"
 #include "cli/error_log.hpp"
-#include "cpl_string.h"
 #include "lib/band_access.hpp"
 #include "lib/fill_band.hpp"
 #include "lib/errors.hpp"
@@ -25,12 +25,6 @@ namespace mcmd::python {
 
 namespace {
 
-gdal::Options parsed(const std::vector<std::string>& options) {
-  CPLStringList list;
-  for (const std::string& o : options) list.AddString(o.c_str());
-  return gdal::parse_options(list.List());
-}
-
 TilingParams tiling_for(const gdal::Options& o) {
   TilingParams t = gdal::tiling_of(o);
   t.always_tile = true;  // the chunked fill is the tiled fill
@@ -40,13 +34,6 @@ TilingParams tiling_for(const gdal::Options& o) {
 
 CellRect rect_of(const std::tuple<int, int, int, int>& r) {
   return CellRect{std::get<0>(r), std::get<1>(r), std::get<2>(r), std::get<3>(r)};
-}
-
-Nodata nodata_of(const py::object& nodata, GDALDataType type) {
-  if (nodata.is_none()) return {};
-  if (type == GDT_Int64) return nodata.cast<std::int64_t>();
-  if (type == GDT_UInt64) return nodata.cast<std::uint64_t>();
-  return nodata.cast<double>();
 }
 
 // A block of the raster in memory, at (x0, y0) of a width × height raster,
@@ -172,7 +159,7 @@ void register_chunk_fill(py::module_& m) {
   m.def(
       "chunk_grid",
       [](int width, int height, const std::vector<std::string>& options) {
-        const ChunkGrid g = chunk_grid(width, height, tiling_for(parsed(options)));
+        const ChunkGrid g = chunk_grid(width, height, tiling_for(parse_options(options)));
         return py::make_tuple(g.step, g.min_side, g.margin, g.whole);
       },
       py::arg("width"), py::arg("height"), py::arg("options"),
@@ -181,7 +168,7 @@ void register_chunk_fill(py::module_& m) {
   m.def(
       "fills_whole",
       [](int width, int height, const std::vector<std::string>& options) {
-        const gdal::Options o = parsed(options);
+        const gdal::Options o = parse_options(options);
         return fills_whole(width, height, o.fill, gdal::tiling_of(o));
       },
       py::arg("width"), py::arg("height"), py::arg("options"),
@@ -189,7 +176,7 @@ void register_chunk_fill(py::module_& m) {
   m.def(
       "max_void_cells",
       [](const std::vector<std::string>& options, const std::string& path) {
-        const gdal::Options o = parsed(options);
+        const gdal::Options o = parse_options(options);
         cli::ErrorLog log;
         cli::DatasetPtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
         if (!ds) throw gdal::Failure(CPLE_OpenFailed, "cannot open '" + path + "'");
@@ -202,7 +189,7 @@ void register_chunk_fill(py::module_& m) {
       [](py::array block, std::optional<py::array> valid, const std::string& gdal_type, py::object nodata,
          const std::vector<std::string>& options, std::pair<int, int> origin, std::pair<int, int> raster_size,
          std::tuple<int, int, int, int> own) {
-        const TilingParams tiling = tiling_for(parsed(options));
+        const TilingParams tiling = tiling_for(parse_options(options));
         cli::ErrorLog log;
         Block b(block, valid, gdal_type, nodata, origin, raster_size);
         ChunkSummary s;
@@ -217,7 +204,7 @@ void register_chunk_fill(py::module_& m) {
   py::class_<Plan>(m, "ChunkedPlan", "Step 2: the plan, from every chunk's summary.")
       .def(py::init([](int width, int height, const std::string& gdal_type, const std::vector<std::string>& options,
                        const py::list& summaries) {
-             const gdal::Options o = parsed(options);
+             const gdal::Options o = parse_options(options);
              std::vector<ChunkSummary> parts;
              for (const py::handle& h : summaries) parts.push_back(summary_of(h.cast<py::dict>()));
              const MemoryRaster type = memory_raster(gdal_type.c_str(), nullptr, 1, 1);

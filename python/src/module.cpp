@@ -10,9 +10,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "arguments.hpp"
 #include "array_fill.hpp"
 #include "chunk_fill.hpp"
-#include "cpl_string.h"
 #include "exceptions.hpp"
 #include "file_fill.hpp"
 #include "gdal.h"
@@ -46,19 +46,6 @@ const std::uint8_t* valid_cells(const std::optional<py::array>& valid, const py:
       valid->itemsize() != 1 || !(valid->flags() & py::array::c_style))
     throw std::invalid_argument("fill_array expects a C-contiguous uint8 mask of the array's shape");
   return static_cast<const std::uint8_t*>(valid->data());
-}
-
-Nodata nodata_of(const py::object& nodata, GDALDataType type) {
-  if (nodata.is_none()) return {};
-  if (type == GDT_Int64) return nodata.cast<std::int64_t>();
-  if (type == GDT_UInt64) return nodata.cast<std::uint64_t>();
-  return nodata.cast<double>();
-}
-
-mcmd::gdal::Options parse_options(const std::vector<std::string>& options) {
-  CPLStringList list;
-  for (const std::string& o : options) list.AddString(o.c_str());
-  return mcmd::gdal::parse_options(list.List());
 }
 
 // Runs `fill` with the GIL released; a Python exception that stopped it (the
