@@ -140,18 +140,11 @@ void ComponentFinder::close(int root) {
 void ComponentFinder::add_row(int y, const std::uint8_t* valid) {
   row_ = y;
   cur_.clear();
-  for (int x = 0; x < width_;) {
-    if (valid[x]) {
-      ++x;
-      continue;
-    }
-    int e = x;
-    while (e < width_ && !valid[e]) ++e;
+  for_each_void_run(valid, width_, [&](int x, int e) {
     const int label = make(VoidRun{y, x, e});
     if (!cur_.empty() && cur_.back().x1 + 2 == x) unite(cur_.back().label, label);  // one known cell between
     cur_.push_back(Labeled{x, e - 1, label});
-    x = e;
-  }
+  });
   // Rows above: Manhattan distance <= 2 means |dx| <= 1 one row up, dx = 0 two rows up.
   auto connect = [&](const std::vector<Labeled>& prev, int reach) {
     std::size_t j = 0;

@@ -30,6 +30,21 @@ struct Box {  // inclusive bounds
   int height() const { return y1 - y0 + 1; }
 };
 
+// Calls f(x0, x1) for each run [x0, x1) of void cells (valid[x] == 0) among
+// the w cells of a row, left to right.
+template <class F>
+void for_each_void_run(const std::uint8_t* valid, int w, F&& f) {
+  for (int x = 0; x < w;) {
+    if (valid[x]) {
+      ++x;
+      continue;
+    }
+    const int x0 = x;
+    while (x < w && !valid[x]) ++x;
+    f(x0, x);
+  }
+}
+
 // One byte per cell of the w×h rectangle whose first cell is (x0, y0): 1
 // where one of `runs` covers it. Pre: the runs lie inside the rectangle.
 std::vector<std::uint8_t> run_mask(const std::vector<VoidRun>& runs, int x0, int y0, int w, int h);

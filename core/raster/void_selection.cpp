@@ -29,13 +29,7 @@ void VoidSelector::unite(int a, int b) {
 void VoidSelector::add_row(int y, const std::uint8_t* valid) {
   const std::size_t begin = runs_.size();
   std::size_t p = prev_begin_;
-  for (int x = 0; x < width_;) {
-    if (valid[x]) {
-      ++x;
-      continue;
-    }
-    const int x0 = x;
-    while (x < width_ && !valid[x]) ++x;
+  for_each_void_run(valid, width_, [&](int x0, int x) {
     const int id = static_cast<int>(runs_.size());
     runs_.push_back(VoidRun{y, x0, x});
     parent_.push_back(id);
@@ -44,7 +38,7 @@ void VoidSelector::add_row(int y, const std::uint8_t* valid) {
     // 8-neighbours: a run of the row above touching [x0 - 1, x] (inclusive).
     while (p < prev_end_ && runs_[p].x1 < x0) ++p;
     for (std::size_t q = p; q < prev_end_ && runs_[q].x0 <= x; ++q) unite(static_cast<int>(q), id);
-  }
+  });
   prev_begin_ = begin;
   prev_end_ = runs_.size();
 }

@@ -40,6 +40,7 @@ struct ChunkGrid {
   int min_side = 0;     // and at least this long
   int margin = 0;       // cells read around a chunk (max(P + 2, guide stride / 2))
   bool whole = false;   // one tile: the raster must be one chunk
+  int guide_stride = 0; // the coarse guide's stride S (0: one tile, no guide)
 };
 ChunkGrid chunk_grid(int width, int height, const TilingParams& tiling);
 

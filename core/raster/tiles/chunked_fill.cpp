@@ -14,6 +14,7 @@
 #include "raster/tiles/lone_void.hpp"
 #include "raster/tiles/tile_jobs.hpp"
 #include "raster/tiles/tile_plan.hpp"
+#include "raster/void_components.hpp"
 
 namespace mcmd {
 
@@ -63,27 +64,20 @@ CellRect grown(const CellRect& own, int by, int width, int height) {
 }
 
 void count_cells(const Cells& c, const CellRect& own, ChunkSummary& s) {
-  const int x1 = own.x0 + own.w;
   for (int y = own.y0; y < own.y0 + own.h; ++y) {
-    const double* z = c.z.data() + static_cast<std::size_t>(y - c.rect.y0) * c.rect.w + (own.x0 - c.rect.x0);
-    const std::uint8_t* valid = c.valid.data() + (z - c.z.data());
-    int run = -1;
-    for (int x = own.x0; x <= x1; ++x) {
-      const bool known = x < x1 && valid[x - own.x0];
-      const bool void_cell = x < x1 && !known;
-      if (known) {
-        ++s.known;
-        s.lo = std::min(s.lo, z[x - own.x0]);
-        s.hi = std::max(s.hi, z[x - own.x0]);
-      }
-      if (void_cell) {
-        ++s.voids;
-        if (run < 0) run = x;
-      } else if (run >= 0) {
-        s.void_runs.insert(s.void_runs.end(), {y, run, x});
-        run = -1;
-      }
+    const std::size_t at = static_cast<std::size_t>(y - c.rect.y0) * c.rect.w + (own.x0 - c.rect.x0);
+    const double* z = c.z.data() + at;
+    const std::uint8_t* valid = c.valid.data() + at;
+    for (int x = 0; x < own.w; ++x) {
+      if (!valid[x]) continue;
+      ++s.known;
+      s.lo = std::min(s.lo, z[x]);
+      s.hi = std::max(s.hi, z[x]);
     }
+    detail::for_each_void_run(valid, own.w, [&](int x0, int x1) {
+      s.voids += static_cast<std::size_t>(x1 - x0);
+      s.void_runs.insert(s.void_runs.end(), {y, own.x0 + x0, own.x0 + x1});
+    });
   }
 }
 
@@ -95,9 +89,10 @@ void put_moments(CoarseGuide& guide, const ChunkSummary& s) {
   guide.set_moments(is, js, part);
 }
 
-// Writes through `out` only the part of a rectangle inside `own`.
-BlockWriter clipped_writer(const RasterAccess& out, const CellRect& own) {
-  return [&out, own](int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
+// `out`, whose write touches only the part of a rectangle inside `own`.
+RasterAccess clipped(const RasterAccess& out, const CellRect& own) {
+  RasterAccess a = out;
+  a.write = [&out, own](int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
     const int cx0 = std::max(x0, own.x0), cy0 = std::max(y0, own.y0);
     const int cx1 = std::min(x0 + w, own.x0 + own.w), cy1 = std::min(y0 + h, own.y0 + own.h);
     if (cx0 >= cx1 || cy0 >= cy1) return;
@@ -114,6 +109,7 @@ BlockWriter clipped_writer(const RasterAccess& out, const CellRect& own) {
       }
     if (any) out.write(cx0, cy0, cw, ch, zc.data(), mc.data());
   };
+  return a;
 }
 
 // A window's result kept at the region's void cells only.
@@ -153,8 +149,8 @@ ChunkGrid chunk_grid(int width, int height, const TilingParams& tiling) {
   ChunkGrid g;
   g.step = layout.x.step();
   g.whole = layout.tile_count() == 1;
-  const int stride = g.whole ? 0 : guide_stride(width, height);
-  g.margin = std::max(g.step + 2, stride / 2);
+  g.guide_stride = g.whole ? 0 : guide_stride(width, height);
+  g.margin = std::max(g.step + 2, g.guide_stride / 2);
   g.min_side = g.margin;
   return g;
 }
@@ -166,7 +162,7 @@ ChunkSummary summarize_chunk(const RasterAccess& raster, const TilingParams& til
   const ChunkGrid grid = chunk_grid(W, H, tiling);
   ChunkSummary s;
   s.own = own;
-  const int stride = grid.whole ? 0 : guide_stride(W, H);
+  const int stride = grid.guide_stride;
   const Cells cells = read_cells(raster, grown(own, stride / 2, W, H));
   count_cells(cells, own, s);
   if (grid.whole) return s;
@@ -265,7 +261,7 @@ void blend_chunk(const RasterAccess& out, const ChunkedPlan& plan, const std::ve
   if (!st.voids) return;
   const detail::TilePlan& tp = st.plan;
   const RasterAccess selected = st.left.empty() ? out : detail::without_left_voids(out, st.left);
-  const BlockWriter write = clipped_writer(selected, own);
+  const RasterAccess chunk = clipped(selected, own);
   // The windows whose output region meets the chunk, in the tiled fill's
   // order (row-major), each once.
   std::vector<const WindowSolution*> windows;
@@ -278,7 +274,7 @@ void blend_chunk(const RasterAccess& out, const ChunkedPlan& plan, const std::ve
                             [](const WindowSolution* a, const WindowSolution* b) { return a->tx == b->tx && a->ty == b->ty; }),
                 windows.end());
   const int P = tp.layout.x.step();
-  Blender blender(tp.layout, write, Range{own.x0 - P, own.x0 + own.w + P});
+  Blender blender(tp.layout, chunk.write, Range{own.x0 - P, own.x0 + own.w + P});
   int rows_ended = 0;
   for (const WindowSolution* w : windows) {
     for (; rows_ended < w->ty; ++rows_ended) blender.end_row(rows_ended);
@@ -293,17 +289,9 @@ void blend_chunk(const RasterAccess& out, const ChunkedPlan& plan, const std::ve
       if (c.index >= tp.small.size() || done[c.index]) continue;
       done[c.index] = true;
       const detail::SmallComponent& comp = tp.small[c.index];
-      const int w = comp.box.width(), h = comp.box.height();
-      std::vector<double> z(static_cast<std::size_t>(w) * h, 0.0);
-      std::vector<std::uint8_t> mask(z.size(), 0);
-      std::size_t k = 0;
-      for (const detail::VoidRun& run : comp.runs)
-        for (int x = run.x0; x < run.x1; ++x, ++k) {
-          const std::size_t i = static_cast<std::size_t>(run.y - comp.box.y0) * w + (x - comp.box.x0);
-          z[i] = c.values.at(k);
-          mask[i] = 1;
-        }
-      write(comp.box.x0, comp.box.y0, w, h, z.data(), mask.data());
+      if (c.values.size() != detail::cell_count(comp.runs))
+        throw std::invalid_argument("a small void's solution does not fit it");
+      detail::write_component(chunk, comp, c.values);
     }
 }
 

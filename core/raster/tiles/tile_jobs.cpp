@@ -93,9 +93,6 @@ JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job&
   return r;
 }
 
-namespace {
-
-// One value per cell of a small component, whoever asks: written as is, never blended.
 std::size_t write_component(const RasterAccess& raster, const SmallComponent& c, const std::vector<double>& values) {
   const int w = c.box.width(), h = c.box.height();
   std::vector<double> z(static_cast<std::size_t>(w) * h, 0.0);
@@ -110,8 +107,6 @@ std::size_t write_component(const RasterAccess& raster, const SmallComponent& c,
   raster.write(c.box.x0, c.box.y0, w, h, z.data(), mask.data());
   return k;
 }
-
-}  // namespace
 
 void run_tile_jobs(const RasterAccess& raster, const TilePlan& plan, const std::vector<std::size_t>& order,
                    std::size_t in_flight, int threads, double max_distance, const ProgressFn& progress,

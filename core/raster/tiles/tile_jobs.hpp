@@ -35,6 +35,10 @@ std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan&
 JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job& job, const JobInput& in,
                     double max_distance, const ProgressFn& progress);
 
+// Write a small component's values (its cells, run after run) as they are:
+// one value per cell, whoever asks, never blended. Returns the cells written.
+std::size_t write_component(const RasterAccess& raster, const SmallComponent& c, const std::vector<double>& values);
+
 // Run plan.jobs, computed in `order` (a permutation of the job indices; a
 // reordered run still combines results in job order), at most `in_flight`
 // jobs read but not yet written (bounds memory to a few windows per thread).
