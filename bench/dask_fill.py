@@ -14,7 +14,6 @@ whether the two outputs are bit-identical. Writes bench/DASK.md.
 from __future__ import annotations
 
 import argparse
-import hashlib
 import os
 import statistics
 import sys
@@ -37,11 +36,6 @@ def worker_stats():
         hwm = next(int(line.split()[1]) for line in f if line.startswith("VmHWM"))
     r = resource.getrusage(resource.RUSAGE_SELF)
     return r.ru_utime + r.ru_stime, hwm / 1024.0
-
-
-def band_md5(path: str) -> str:
-    ds = gdal.Open(path)  # held: a band outlives no dataset
-    return hashlib.md5(ds.GetRasterBand(1).ReadAsArray().tobytes()).hexdigest()
 
 
 def main() -> None:
@@ -75,7 +69,7 @@ def main() -> None:
                                  "rss": r["rss_mb"], "worker_rss": sorted(v[1] for v in after.values())})
             print(f"run {run + 1}: cli {rows['cli'][-1]['wall']:.2f} s, dask {rows['dask'][-1]['wall']:.2f} s",
                   flush=True)
-    same = band_md5(cli_out) == band_md5(dask_out)
+    same = V.pixel_md5(cli_out) == V.pixel_md5(dask_out)
     med = lambda k, key: statistics.median(x[key] for x in rows[k])  # noqa: E731
     worker_peak = statistics.median(max(x["worker_rss"]) for x in rows["dask"])
     lines = [

@@ -88,6 +88,15 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
+// make_raster(w, h, drop) filled in chunks of `side` and by fill_raster's tiled path.
+bool chunked_equals_tiled(int w, int h, double drop, const FillParams& params, const TilingParams& tiling, int side,
+                          unsigned shuffle) {
+  MemRaster r = make_raster(w, h, drop);
+  const std::vector<double> want = tiled(r, params, tiling);
+  MemRaster c = make_raster(w, h, drop);
+  return same_bits(chunked(c, params, tiling, side, shuffle), want);
+}
+
 }  // namespace
 
 TEST(ChunkedFill, EqualsTheTiledFillForAnyChunkingAndOrder) {
@@ -110,10 +119,7 @@ TEST(ChunkedFill, EqualsTheTiledFillWithRoughnessAndMaxDistance) {
   TilingParams tiling;
   tiling.tile_side = 33;
   tiling.max_distance = 12;
-  MemRaster r = make_raster(257, 190, 0.02);
-  const std::vector<double> want = tiled(r, rough, tiling);
-  MemRaster c = make_raster(257, 190, 0.02);
-  EXPECT_TRUE(same_bits(chunked(c, rough, tiling, 64, 5u), want));
+  EXPECT_TRUE(chunked_equals_tiled(257, 190, 0.02, rough, tiling, 64, 5u));
 }
 
 TEST(ChunkedFill, EqualsTheTiledFillOfAPaperMethod) {
@@ -121,10 +127,7 @@ TEST(ChunkedFill, EqualsTheTiledFillOfAPaperMethod) {
   paper.method = Method::paper_ds;
   TilingParams tiling;
   tiling.tile_side = 65;
-  MemRaster r = make_raster(200, 170, 0.01);
-  const std::vector<double> want = tiled(r, paper, tiling);
-  MemRaster c = make_raster(200, 170, 0.01);
-  EXPECT_TRUE(same_bits(chunked(c, paper, tiling, 128, 6u), want));
+  EXPECT_TRUE(chunked_equals_tiled(200, 170, 0.01, paper, tiling, 128, 6u));
 }
 
 TEST(ChunkedFill, LeavesTheVoidsTheTiledFillLeaves) {

@@ -12,7 +12,7 @@ from typing import Any, NamedTuple, Optional
 
 import numpy as np
 
-from .. import _mcmd
+from .. import _arrays, _mcmd
 from .._mcmd import Error
 
 
@@ -33,7 +33,7 @@ _PLANS_LOCK = threading.Lock()
 
 def _cells(block: np.ndarray, spec: Spec) -> np.ndarray:
     """A C-contiguous, native-order copy of a block (the MEM band reads it in place)."""
-    return np.array(block, dtype=np.dtype(spec.dtype).newbyteorder("="), order="C", copy=True)
+    return _arrays.native_copy(np.asarray(block, dtype=np.dtype(spec.dtype)))
 
 
 def _valid(mask: Optional[np.ndarray]) -> Optional[np.ndarray]:
