@@ -123,17 +123,23 @@ std::vector<LineCell> line_cells(const RasterAccess& raster) {
   return out;
 }
 
-void place_line_cells(Grid& grid, const std::vector<LineCell>& cells) {
-  const long long ox = grid.origin_x(), oy = grid.origin_y();
-  const auto [b, e] = cells_in_rows(cells, static_cast<int>(std::max(0LL, oy)), grid.side());
+void place_line_cells(int w, int h, long long ox, long long oy, double* z, CellState* state,
+                      const std::vector<LineCell>& cells) {
+  const auto [b, e] = cells_in_rows(cells, static_cast<int>(std::max(0LL, oy)), h);
   for (std::size_t k = b; k < e; ++k) {
     const LineCell& c = cells[k];
     const long long u = c.x - ox, v = c.y - oy;
-    if (std::isnan(c.z) || !grid.contains(static_cast<int>(u), static_cast<int>(v)) || u != static_cast<int>(u)) continue;
-    if (grid.state(static_cast<int>(u), static_cast<int>(v)) != CellState::unknown) continue;
-    grid.state(static_cast<int>(u), static_cast<int>(v)) = c.kind;
-    grid.z(static_cast<int>(u), static_cast<int>(v)) = c.z;
+    if (std::isnan(c.z) || u < 0 || v < 0 || u >= w || v >= h) continue;
+    const std::size_t i = static_cast<std::size_t>(v) * static_cast<std::size_t>(w) + static_cast<std::size_t>(u);
+    if (state[i] != CellState::unknown) continue;
+    state[i] = c.kind;
+    z[i] = c.z;
   }
+}
+
+void place_line_cells(Grid& grid, const std::vector<LineCell>& cells) {
+  place_line_cells(grid.side(), grid.side(), grid.origin_x(), grid.origin_y(), grid.elevations().data(),
+                   grid.states().data(), cells);
 }
 
 std::pair<std::size_t, std::size_t> cells_in_rows(const std::vector<LineCell>& cells, int y0, int h) {

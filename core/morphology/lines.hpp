@@ -36,6 +36,9 @@ std::vector<LineCell> line_cells(const RasterAccess& raster);
 // (origin_x, origin_y)) that are line cells with a height ridge or river
 // cells of that height (a tile's window: the tiled fill).
 void place_line_cells(Grid& grid, const std::vector<LineCell>& cells);
+// The same on a w×h row-major field whose cell (0, 0) is raster cell (ox, oy).
+void place_line_cells(int w, int h, long long ox, long long oy, double* z, CellState* state,
+                      const std::vector<LineCell>& cells);
 
 // The line cells in rectangle [x0, x0+w) × [y0, y0+h): index range into a
 // sorted list.

@@ -60,7 +60,7 @@ WindowResult solve_tile(const MemRaster& r, const TileLayout& layout, const Coar
   WindowInput in;
   in.tx = tx;
   in.ty = ty;
-  in.rect = window_read_rect(layout, tx, ty);
+  in.rect = window_read_rect(layout, tx, ty, params.method);
   for (int y = 0; y < in.rect.h; ++y)
     for (int x = 0; x < in.rect.w; ++x) {
       in.z.push_back(r.z[r.at(in.rect.x0 + x, in.rect.y0 + y)]);

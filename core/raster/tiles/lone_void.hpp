@@ -26,8 +26,10 @@ constexpr int kSmallVoidMargin = 8;
 constexpr int kSmallVoidMarginDivisor = 8;
 int small_void_margin(int extent);
 
-// The largest bounding-box side solved alone: its grid is never larger than
-// a window of the layout. Below 1: no component is solved alone.
+// The largest bounding-box side solved alone: half a tile, at most
+// kMaxSmallExtent, and its grid never larger than a tile's 2^n+1 window.
+// Below 1: no component is solved alone.
+constexpr int kMaxSmallExtent = 128;
 int max_small_extent(const TileLayout& layout);
 
 struct ComponentGrid {

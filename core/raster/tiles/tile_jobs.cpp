@@ -68,7 +68,7 @@ std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan&
     const int nx = plan.layout.x.count();
     in->window.tx = static_cast<int>(job.index % nx);
     in->window.ty = static_cast<int>(job.index / nx);
-    in->window.rect = window_read_rect(plan.layout, in->window.tx, in->window.ty);
+    in->window.rect = window_read_rect(plan.layout, in->window.tx, in->window.ty, plan.params.method);
   }
   const ReadRect& r = in->window.rect;
   const std::size_t cells = static_cast<std::size_t>(r.w) * r.h;

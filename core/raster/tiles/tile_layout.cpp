@@ -22,7 +22,7 @@ TileAxis::TileAxis(int length, int step) : length_(length), step_(step) {
   if (step < 2 || (step & (step - 1)) != 0) throw std::invalid_argument("tile step must be a power of two >= 2");
   const long long cells = static_cast<long long>(length) - 1;
   count_ = cells <= 0 ? 1 : static_cast<int>((cells + step - 1) / step);
-  band_ = std::max(1, step / 8);
+  band_ = std::clamp(step / 8, 1, kMaxBand);
 }
 
 namespace {

@@ -7,13 +7,18 @@
 // at t·P - P/2 (the tile plus a halo of P/2 on each side; cells outside the
 // raster are mirrored in). The seam s (between tiles s-1 and s) lies at s·P;
 // cells with |x - s·P| < b are blended between the two windows with weights
-// that sum to one, b = max(1, P/8) ("band half-width"). Tile t's output region
+// that sum to one, b = P/8 between 1 and kMaxBand ("band half-width"). Tile t's output region
 // is the cells where its weight is > 0: [t·P - b + 1, (t+1)·P + b - 1].
 #pragma once
 
 #include <cstddef>
 
 namespace mcmd {
+
+// The blend band's half-width never exceeds this: what it is at T = 129. A
+// band hides the windows' residual differences; wider ones at larger tiles
+// only add cells solved twice (docs/tiling.md).
+constexpr int kMaxBand = 16;
 
 // C² smooth ramp: 0 for u <= 0, 1 for u >= 1, 6u⁵ - 15u⁴ + 10u³ between;
 // ramp(u) + ramp(1 - u) = 1.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
 
 #include "common/distance.hpp"
 #include "common/padding.hpp"
@@ -21,6 +22,62 @@ std::vector<int> reflected(int origin, int side, int length) {
   return r;
 }
 
+// Raster cells [x0, x0 + w) × [y0, y0 + h) a window covers (outside the
+// raster, mirrored in).
+struct WindowSpan {
+  int x0 = 0, y0 = 0, w = 0, h = 0;
+};
+
+// How far a region window reaches beyond its output region: the guide radius
+// and the pins' 2-cell margin, never past the 2^n+1 window.
+int region_margin(const TileLayout& layout) {
+  return std::min(static_cast<int>(kGuideRadiusCap) + 2, layout.x.step() / 2 - layout.x.band() + 1);
+}
+
+WindowSpan window_span(const TileLayout& layout, int tx, int ty, Method method) {
+  if (solves_region(layout, method)) {
+    const Range rx = layout.x.region(tx), ry = layout.y.region(ty);
+    const int m = region_margin(layout);
+    return WindowSpan{rx.begin - m, ry.begin - m, rx.size() + 2 * m, ry.size() + 2 * m};
+  }
+  return WindowSpan{layout.x.window_origin(tx), layout.y.window_origin(ty), layout.x.window_side(),
+                    layout.y.window_side()};
+}
+
+// A window's cells, read from its input (mirrored where outside the raster).
+struct WindowCells {
+  WindowSpan span;
+  std::vector<int> mx, my;  // raster column of each window column, row of each row
+  std::vector<double> z;
+  std::vector<CellState> state;
+  std::vector<std::uint8_t> known;  // known in the raster (not pins)
+  std::size_t index(int u, int v) const { return static_cast<std::size_t>(v) * span.w + u; }
+};
+
+WindowCells load_window(const TileLayout& layout, const WindowInput& in, Method method) {
+  WindowCells c;
+  c.span = window_span(layout, in.tx, in.ty, method);
+  c.mx = reflected(c.span.x0, c.span.w, layout.x.length());
+  c.my = reflected(c.span.y0, c.span.h, layout.y.length());
+  const std::size_t cells = static_cast<std::size_t>(c.span.w) * c.span.h;
+  c.z.assign(cells, 0.0);
+  c.state.assign(cells, CellState::unknown);
+  c.known.assign(cells, 0);
+  const std::size_t rw = static_cast<std::size_t>(in.rect.w);
+  for (int v = 0; v < c.span.h; ++v) {
+    const std::size_t row = static_cast<std::size_t>(c.my[v] - in.rect.y0) * rw;
+    for (int u = 0; u < c.span.w; ++u) {
+      const std::size_t src = row + static_cast<std::size_t>(c.mx[u] - in.rect.x0);
+      if (!in.valid[src]) continue;
+      const std::size_t i = c.index(u, v);
+      c.z[i] = in.z[src];
+      c.state[i] = CellState::known;
+      c.known[i] = 1;
+    }
+  }
+  return c;
+}
+
 // [x0, x1) × [y0, y1) in window cells.
 struct WindowRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
@@ -29,108 +86,111 @@ struct WindowRect {
   bool holds(int u, int v) const { return u >= x0 && u < x1 && v >= y0 && v < y1; }
 };
 
-// What the default method solves of a window: the tile's output region grown
-// by one blend band on every side. Every cell the blend takes from the window
-// then has at least one band of context, and no cell is solved twice beyond
-// the bands (a 193² field at T = 129 instead of the 257² window). The paper
-// methods need the whole 2^n+1 window.
-WindowRect solved_rect(const TileLayout& layout, const WindowInput& in, int ox, int oy, int side) {
+// What the default method solves of a region window: the tile's output
+// region grown by one blend band on every side. Every cell the blend takes
+// from the window then has at least one band of context, and no cell is
+// solved twice beyond the bands. The paper methods subdivide the whole
+// 2^n+1 window.
+WindowRect solved_rect(const TileLayout& layout, const WindowInput& in, const WindowSpan& span) {
   const Range rx = layout.x.region(in.tx), ry = layout.y.region(in.ty);
   const int bx = layout.x.band(), by = layout.y.band();
-  return WindowRect{std::max(0, rx.begin - ox - bx), std::max(0, ry.begin - oy - by),
-                    std::min(side, rx.end - ox + bx), std::min(side, ry.end - oy + by)};
+  return WindowRect{std::max(0, rx.begin - span.x0 - bx), std::max(0, ry.begin - span.y0 - by),
+                    std::min(span.w, rx.end - span.x0 + bx), std::min(span.h, ry.end - span.y0 + by)};
 }
 
-// A bound on every cell's distance to a known cell of `known` inside `rect`,
-// when all lie within `reach` (Euclidean) by a Chebyshev test; -1 otherwise.
-double near_bound(const std::vector<std::uint8_t>& known, int side, const WindowRect& rect, double reach) {
+// A bound on every cell's distance to a known cell inside `rect`, when all
+// lie within `reach` (Euclidean) by a Chebyshev test; -1 otherwise.
+double near_bound(const WindowCells& c, const WindowRect& rect, double reach) {
   const int r = static_cast<int>(std::floor(reach / std::sqrt(2.0)));
   if (r < 1) return -1.0;
   std::vector<std::uint8_t> sub(static_cast<std::size_t>(rect.w()) * rect.h());
   for (int v = 0; v < rect.h(); ++v)
-    std::copy_n(known.begin() + static_cast<std::ptrdiff_t>(v + rect.y0) * side + rect.x0, rect.w(),
+    std::copy_n(c.known.begin() + static_cast<std::ptrdiff_t>(c.index(rect.x0, rect.y0 + v)), rect.w(),
                 sub.begin() + static_cast<std::ptrdiff_t>(v) * rect.w());
   return all_within_chebyshev(sub.data(), rect.w(), rect.h(), r) ? r * std::sqrt(2.0) : -1.0;
 }
 
-// Pins unknown cells of the window to the guide: with `dist` (the distance to
-// the window's known cells; may be empty when no cell is that far), those
-// farther than `radius`, since deep inside voids the guide is the surface;
-// then the unknown cells of the outer 2-cell ring, so every window is
-// constrained. Returns the largest distance left unpinned inside `rect`.
-double pin_to_guide(Grid& grid, const std::vector<double>& dist, double radius, const WindowRect& rect,
-                    const std::vector<int>& mx, const std::vector<int>& my, const CoarseGuide& guide) {
-  const int side = grid.side();
+// Pins unknown cells of `ring` (the part of the window solved) to the guide:
+// with `dist` (the distance to the window's known cells; empty when no cell is
+// that far), those farther than `radius`, since deep inside voids the guide
+// is the surface; then the unknown cells of its outer 2-cell ring, so that the
+// solve is constrained. Returns the largest distance left unpinned.
+double pin_to_guide(WindowCells& c, const std::vector<double>& dist, double radius, const WindowRect& ring,
+                    const CoarseGuide& guide) {
   const auto pin = [&](int u, int v) {
-    const std::size_t i = grid.index(u, v);
-    grid.elevations()[i] = guide.at(mx[u], my[v]);
-    grid.states()[i] = CellState::known;
+    const std::size_t i = c.index(u, v);
+    c.z[i] = guide.at(c.mx[u], c.my[v]);
+    c.state[i] = CellState::known;
   };
   double farthest = 0.0;
   if (!dist.empty())
-    for (int v = 0; v < side; ++v)
-      for (int u = 0; u < side; ++u) {
-        const double d = dist[grid.index(u, v)];
+    for (int v = ring.y0; v < ring.y1; ++v)
+      for (int u = ring.x0; u < ring.x1; ++u) {
+        const double d = dist[c.index(u, v)];
         if (d > radius) pin(u, v);
-        else if (rect.holds(u, v)) farthest = std::max(farthest, d);
+        else if (ring.holds(u, v)) farthest = std::max(farthest, d);
       }
-  for (int v = 0; v < side; ++v) {
-    const bool ring_row = v < 2 || v >= side - 2;
-    for (int u = 0; u < side; u = ring_row || u != 1 ? u + 1 : std::max(2, side - 2))  // skip the inside
-      if (grid.states()[grid.index(u, v)] == CellState::unknown) pin(u, v);
+  for (int v = ring.y0; v < ring.y1; ++v) {
+    const bool ring_row = v < ring.y0 + 2 || v >= ring.y1 - 2;
+    for (int u = ring.x0; u < ring.x1; u = ring_row || u != ring.x0 + 1 ? u + 1 : std::max(u + 1, ring.x1 - 2))
+      if (c.state[c.index(u, v)] == CellState::unknown) pin(u, v);
   }
   return farthest;
 }
 
-// The default method on `rect` of the window, its unknown outer 2-cell ring
-// pinned to the guide like the window's own ring; the result is written back
-// into the window.
-void fill_solved_rect(Grid& grid, const WindowRect& rect, const std::vector<int>& mx, const std::vector<int>& my,
-                      const CoarseGuide& guide, const FillParams& params, double farthest,
-                      const ProgressFn& progress) {
+// The default method on `rect` of the window, in place.
+void fill_rect(WindowCells& c, const WindowRect& rect, const FillParams& params, double farthest,
+               const ProgressFn& progress) {
   const int w = rect.w(), h = rect.h();
   std::vector<double> z(static_cast<std::size_t>(w) * h);
   std::vector<CellState> state(z.size());
-  bool any_unknown = false;
+  for (int v = 0; v < h; ++v) {
+    const std::ptrdiff_t from = static_cast<std::ptrdiff_t>(c.index(rect.x0, rect.y0 + v)), to = std::ptrdiff_t{v} * w;
+    std::copy_n(c.z.begin() + from, w, z.begin() + to);
+    std::copy_n(c.state.begin() + from, w, state.begin() + to);
+  }
+  if (std::none_of(state.begin(), state.end(), [](CellState s) { return s == CellState::unknown; })) return;
+  thin_plate_with_roughness(FieldView{w, h, z.data(), state.data(), farthest}, c.span.x0 + rect.x0,
+                            c.span.y0 + rect.y0, params, ThinPlateSchedule{}, progress);
   for (int v = 0; v < h; ++v)
-    for (int u = 0; u < w; ++u) {
-      const std::size_t i = grid.index(rect.x0 + u, rect.y0 + v), j = static_cast<std::size_t>(v) * w + u;
-      z[j] = grid.elevations()[i];
-      state[j] = grid.states()[i];
-      if (state[j] != CellState::unknown) continue;
-      if (u < 2 || v < 2 || u >= w - 2 || v >= h - 2) {
-        z[j] = guide.at(mx[rect.x0 + u], my[rect.y0 + v]);
-        state[j] = CellState::known;
-      } else {
-        any_unknown = true;
-      }
-    }
-  if (!any_unknown) return;
-  thin_plate_with_roughness(FieldView{w, h, z.data(), state.data(), farthest}, grid.origin_x() + rect.x0,
-                            grid.origin_y() + rect.y0, params, ThinPlateSchedule{}, progress);
-  for (int v = 0; v < h; ++v)
-    std::copy_n(z.begin() + static_cast<std::ptrdiff_t>(v) * w, w,
-                grid.elevations().begin() + static_cast<std::ptrdiff_t>(grid.index(rect.x0, rect.y0 + v)));
+    std::copy_n(z.begin() + std::ptrdiff_t{v} * w, w,
+                c.z.begin() + static_cast<std::ptrdiff_t>(c.index(rect.x0, rect.y0 + v)));
+}
+
+// The whole 2^n+1 window through fill_grid (the paper methods; a single tile).
+void fill_whole(WindowCells& c, const TileLayout& layout, const FillParams& params, const ProgressFn& progress) {
+  if (std::none_of(c.state.begin(), c.state.end(), [](CellState s) { return s == CellState::unknown; })) return;
+  Grid grid(layout.window_levels(), c.span.x0, c.span.y0);
+  std::copy(c.z.begin(), c.z.end(), grid.elevations().begin());
+  std::copy(c.state.begin(), c.state.end(), grid.states().begin());
+  fill_grid(grid, params, progress);
+  std::copy(grid.elevations().begin(), grid.elevations().end(), c.z.begin());
 }
 
 }  // namespace
 
+bool solves_region(const TileLayout& layout, Method method) {
+  return method == Method::mcmd && layout.tile_count() > 1;
+}
+
 double guide_radius(const TileLayout& layout, const CoarseGuide& guide) {
-  // 8 guide strides (measured: 4 and 16 were worse on blob voids), kept inside
-  // the halo so every window that outputs a cell sees the same known cells
-  // within that radius.
-  const double limit = layout.x.step() / 2 - layout.x.band() - 2;
+  // 8 guide strides (measured: 4 and 16 were worse on blob voids), at most
+  // kGuideRadiusCap, kept inside the halo so every window that outputs a cell
+  // sees the same known cells within that radius.
+  const double limit = std::min<double>(kGuideRadiusCap, layout.x.step() / 2 - layout.x.band() - 2);
   return std::max(1.0, std::min(kGuideRadiusStrides * guide.stride(), limit));
 }
 
 int exact_distance_limit(const TileLayout& layout) {
-  return std::min(layout.x.step(), layout.y.step()) / 2 - layout.x.band();
+  const int halo = std::min(layout.x.step(), layout.y.step()) / 2 - layout.x.band();
+  return std::min(halo, static_cast<int>(kGuideRadiusCap) + 2);
 }
 
-ReadRect window_read_rect(const TileLayout& layout, int tx, int ty) {
+ReadRect window_read_rect(const TileLayout& layout, int tx, int ty, Method method) {
   // Reflection maps a run of cells onto a run, so [min, max] covers them all.
-  const std::vector<int> xs = reflected(layout.x.window_origin(tx), layout.x.window_side(), layout.x.length());
-  const std::vector<int> ys = reflected(layout.y.window_origin(ty), layout.y.window_side(), layout.y.length());
+  const WindowSpan s = window_span(layout, tx, ty, method);
+  const std::vector<int> xs = reflected(s.x0, s.w, layout.x.length());
+  const std::vector<int> ys = reflected(s.y0, s.h, layout.y.length());
   const auto [x0, x1] = std::minmax_element(xs.begin(), xs.end());
   const auto [y0, y1] = std::minmax_element(ys.begin(), ys.end());
   return ReadRect{*x0, *y0, *x1 - *x0 + 1, *y1 - *y0 + 1};
@@ -139,47 +199,28 @@ ReadRect window_read_rect(const TileLayout& layout, int tx, int ty) {
 WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const CoarseGuide* guide,
                           const FillParams& params, double max_distance, const ProgressFn& progress,
                           const std::vector<morph::LineCell>& lines) {
-  const int ox = layout.x.window_origin(in.tx);
-  const int oy = layout.y.window_origin(in.ty);
-  Grid grid(layout.window_levels(), ox, oy);
-  const int side = grid.side();
-  const std::vector<int> mx = reflected(ox, side, layout.x.length());
-  const std::vector<int> my = reflected(oy, side, layout.y.length());
-  const std::size_t rw = static_cast<std::size_t>(in.rect.w);
-
-  std::vector<std::uint8_t> known(grid.cell_count(), 0);
-  for (int v = 0; v < side; ++v) {
-    const std::size_t row = static_cast<std::size_t>(my[v] - in.rect.y0) * rw;
-    for (int u = 0; u < side; ++u) {
-      const std::size_t src = row + static_cast<std::size_t>(mx[u] - in.rect.x0);
-      if (!in.valid[src]) continue;
-      const std::size_t i = grid.index(u, v);
-      grid.elevations()[i] = in.z[src];
-      grid.states()[i] = CellState::known;
-      known[i] = 1;
-    }
-  }
+  const bool region = solves_region(layout, params.method);
   const bool guided = guide && guide->ready();
-  const bool cropped = guided && params.method == Method::mcmd;
-  const WindowRect rect = cropped ? solved_rect(layout, in, ox, oy, side) : WindowRect{0, 0, side, side};
+  if (region && !guided) throw std::logic_error("a tiled window of the default method needs the guide");
+  WindowCells c = load_window(layout, in, params.method);
+  const WindowRect rect = region ? solved_rect(layout, in, c.span) : WindowRect{0, 0, c.span.w, c.span.h};
+
   std::vector<double> dist;  // to the nearest known cell of the window
-  double farthest = -1.0;    // a bound on it over rect, when known
-  if (cropped && max_distance <= 0) {
-    // Scattered samples: every cell near data, so no cell is pinned to the
-    // guide and the transform is spared.
-    const double radius = guide_radius(layout, *guide);
-    farthest = near_bound(known, side, rect, std::min(radius, ThinPlateSchedule{}.shallow_reach));
-  }
-  if ((guided || max_distance > 0) && farthest < 0) dist = distance_to_valid(known.data(), side, side);
+  double farthest = -1.0;    // a bound on it over rect
+  // Scattered samples: every cell near data, so none is pinned to the guide
+  // and the transform is spared.
+  if (region && max_distance <= 0)
+    farthest = near_bound(c, rect, std::min(guide_radius(layout, *guide), ThinPlateSchedule{}.shallow_reach));
+  if ((guided || max_distance > 0) && farthest < 0) dist = distance_to_valid(c.known.data(), c.span.w, c.span.h);
   if (guided) {
-    const double pinned_farthest = pin_to_guide(grid, dist, guide_radius(layout, *guide), rect, mx, my, *guide);
-    if (!dist.empty()) farthest = pinned_farthest;
+    const double unpinned = pin_to_guide(c, dist, guide_radius(layout, *guide), rect, *guide);
+    if (!dist.empty()) farthest = unpinned;
   }
-  morph::place_line_cells(grid, lines);
-  if (cropped)
-    fill_solved_rect(grid, rect, mx, my, *guide, params, farthest, progress);
-  else if (grid.count(CellState::unknown) > 0)
-    fill_grid(grid, params, progress);
+  morph::place_line_cells(c.span.w, c.span.h, c.span.x0, c.span.y0, c.z.data(), c.state.data(), lines);
+  if (region)
+    fill_rect(c, rect, params, farthest, progress);
+  else
+    fill_whole(c, layout, params, progress);
 
   WindowResult r;
   r.tx = in.tx;
@@ -193,9 +234,9 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
   std::size_t k = 0;
   for (int y = r.ys.begin; y < r.ys.end; ++y)
     for (int x = r.xs.begin; x < r.xs.end; ++x, ++k) {
-      const std::size_t i = grid.index(x - ox, y - oy);
-      r.z[k] = grid.elevations()[i];
-      bool write = !known[i];
+      const std::size_t i = c.index(x - c.span.x0, y - c.span.y0);
+      r.z[k] = c.z[i];
+      bool write = !c.known[i];
       // Beyond what the window sees, the guide's coarse distance decides.
       if (write && max_distance > 0 && !within_fill_distance(dist[i], max_distance))
         write = beyond_window && within_fill_distance(guide->coarse_distance(x, y), max_distance);

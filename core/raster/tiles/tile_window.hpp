@@ -1,12 +1,16 @@
 // One tile's window: what to read for it, and its fill (docs/tiling.md).
 //
-// The window of tile (tx, ty) is a 2^n+1 grid (n = layout.window_levels())
-// whose cell (u, v) is raster cell (ox + u, oy + v), reflected into the raster
-// where it falls outside. With a coarse guide, unknown cells on the outer
-// 2-cell ring and unknown cells farther than guide_radius from every known
-// cell are pinned to it, so every window is constrained, deep void interiors
-// are the same in every window, and windows only solve the fine detail near
-// known cells. The result is the fill over the tile's output region.
+// The paper methods (and a raster of one tile) solve the whole window, a
+// 2^n+1 grid (n = layout.window_levels()) whose cell (u, v) is raster cell
+// (ox + u, oy + v), reflected into the raster where it falls outside. The
+// default method on several tiles reads a *region window*, the tile's output
+// region grown by the guide radius and 2 cells, and solves only the region
+// grown by one blend band. With a coarse guide, unknown cells farther than
+// guide_radius from every known cell of the window, and unknown cells on the
+// outer 2-cell ring of what is solved, are pinned to it, so every solve is
+// constrained, deep void interiors are the same in every window, and windows
+// only solve the fine detail near known cells. The result is the fill over
+// the tile's output region.
 #pragma once
 
 #include <cstdint>
@@ -26,10 +30,19 @@ namespace mcmd {
 struct ReadRect {
   int x0 = 0, y0 = 0, w = 0, h = 0;
 };
-ReadRect window_read_rect(const TileLayout& layout, int tx, int ty);
+ReadRect window_read_rect(const TileLayout& layout, int tx, int ty, Method method);
+
+// True when tile windows of `method` are region windows (above).
+bool solves_region(const TileLayout& layout, Method method);
+
+// The guide radius never exceeds this many cells: what it is at T = 129,
+// where the halo bounds it, and what blob voids measured best at larger tiles
+// (docs/tiling.md).
+constexpr double kGuideRadiusCap = 46.0;
 
 // Unknown cells farther than this (cells, Euclidean) from every known cell of
-// a window are pinned to the guide: min(8 · stride, P/2 - b - 2), at least 1.
+// a window are pinned to the guide: min(8 · stride, P/2 - b - 2,
+// kGuideRadiusCap), at least 1.
 double guide_radius(const TileLayout& layout, const CoarseGuide& guide);
 
 struct WindowInput {
@@ -41,7 +54,7 @@ struct WindowInput {
 };
 
 // Up to this max distance the window sees every known cell that decides
-// whether a cell of its output region is written: P/2 - b.
+// whether a cell of its output region is written: min(P/2 - b, kGuideRadiusCap + 2).
 int exact_distance_limit(const TileLayout& layout);
 
 // Fill tile (tx, ty)'s window. `guide` may be null (a single-tile layout,
