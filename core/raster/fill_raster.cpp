@@ -16,10 +16,10 @@
 
 namespace mcmd {
 
-int effective_tile_side(int width, int height, int requested) {
+int effective_tile_side(int width, int height, int requested, Method method) {
   if (requested != 0 && !is_tile_side(requested))
     throw std::invalid_argument("tile size must be 2^k + 1 (3, 5, 9, ..., 257, 513, 1025, ...)");
-  const int side = requested == 0 ? kDefaultTileSide : requested;
+  const int side = requested == 0 ? default_tile_side(method) : requested;
   int cover = 3;  // smallest 2^k + 1 >= max(width, height), k >= 1
   while (cover < std::max(width, height) && cover < side) cover = 2 * (cover - 1) + 1;
   return std::min(side, cover);
@@ -44,7 +44,7 @@ void check_inputs(const RasterAccess& raster, const TilingParams& tiling) {
   if (!std::isfinite(tiling.max_distance) || tiling.max_distance < 0)
     throw std::invalid_argument("max distance must be a finite number >= 0");
   if (tiling.threads < 0) throw std::invalid_argument("thread count must be >= 0");
-  effective_tile_side(raster.width, raster.height, tiling.tile_side);  // throws on a bad size, tiles or not
+  effective_tile_side(raster.width, raster.height, tiling.tile_side, Method::mcmd);  // throws on a bad size
 }
 
 }  // namespace

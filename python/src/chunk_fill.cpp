@@ -159,7 +159,8 @@ void register_chunk_fill(py::module_& m) {
   m.def(
       "chunk_grid",
       [](int width, int height, const std::vector<std::string>& options) {
-        const ChunkGrid g = chunk_grid(width, height, tiling_for(parse_options(options)));
+        const gdal::Options o = parse_options(options);
+        const ChunkGrid g = chunk_grid(width, height, tiling_for(o), o.fill.method);
         return py::make_tuple(g.step, g.min_side, g.margin, g.whole);
       },
       py::arg("width"), py::arg("height"), py::arg("options"),
@@ -189,13 +190,14 @@ void register_chunk_fill(py::module_& m) {
       [](py::array block, std::optional<py::array> valid, const std::string& gdal_type, py::object nodata,
          const std::vector<std::string>& options, std::pair<int, int> origin, std::pair<int, int> raster_size,
          std::tuple<int, int, int, int> own) {
-        const TilingParams tiling = tiling_for(parse_options(options));
+        const gdal::Options o = parse_options(options);
+        const TilingParams tiling = tiling_for(o);
         cli::ErrorLog log;
         Block b(block, valid, gdal_type, nodata, origin, raster_size);
         ChunkSummary s;
         {
           const py::gil_scoped_release nogil;
-          s = summarize_chunk(b.access(), tiling, rect_of(own));
+          s = summarize_chunk(b.access(), tiling, o.fill.method, rect_of(own));
         }
         return summary_dict(std::move(s));
       },

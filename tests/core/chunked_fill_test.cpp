@@ -38,7 +38,7 @@ std::vector<int> edges(int length, int side, const ChunkGrid& g) {
 std::vector<double> chunked(MemRaster& r, const FillParams& params, const TilingParams& tiling, int side,
                             unsigned shuffle) {
   const RasterAccess access = r.access();
-  const ChunkGrid g = chunk_grid(r.w, r.h, tiling);
+  const ChunkGrid g = chunk_grid(r.w, r.h, tiling, params.method);
   EXPECT_EQ(side % g.step, 0);
   const std::vector<int> xs = edges(r.w, side, g), ys = edges(r.h, side, g);
   const int nx = static_cast<int>(xs.size()) - 1, ny = static_cast<int>(ys.size()) - 1;
@@ -61,7 +61,7 @@ std::vector<double> chunked(MemRaster& r, const FillParams& params, const Tiling
   };
   std::shuffle(order.begin(), order.end(), rng);
   std::vector<ChunkSummary> summaries;
-  for (std::size_t k : order) summaries.push_back(summarize_chunk(near(chunks[k]), tiling, chunks[k]));
+  for (std::size_t k : order) summaries.push_back(summarize_chunk(near(chunks[k]), tiling, params.method, chunks[k]));
   const ChunkedPlan plan(r.w, r.h, params, tiling, summaries);
   std::vector<ChunkSolution> solutions(chunks.size());
   std::shuffle(order.begin(), order.end(), rng);
@@ -159,6 +159,6 @@ TEST(ChunkedFill, RefusesWhatItCannotDo) {
   MemRaster none(70, 70);
   std::fill(none.valid.begin(), none.valid.end(), 0);
   const RasterAccess a = none.access();
-  const std::vector<ChunkSummary> s{summarize_chunk(a, tiling, CellRect{0, 0, 70, 70})};
+  const std::vector<ChunkSummary> s{summarize_chunk(a, tiling, Method::mcmd, CellRect{0, 0, 70, 70})};
   EXPECT_THROW(ChunkedPlan(70, 70, FillParams{}, tiling, s), std::invalid_argument);
 }

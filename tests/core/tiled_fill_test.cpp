@@ -120,12 +120,13 @@ TEST(TileLayout, RampIsSmoothAndSymmetric) {
 }
 
 TEST(TileLayout, EffectiveTileSide) {
-  EXPECT_EQ(effective_tile_side(5000, 300, 0), kDefaultTileSide);
-  EXPECT_EQ(effective_tile_side(100, 60, 0), 129);
-  EXPECT_EQ(effective_tile_side(1, 1, 0), 3);
-  EXPECT_EQ(effective_tile_side(5000, 300, 257), 257);
-  EXPECT_THROW(effective_tile_side(100, 100, 100), std::invalid_argument);
-  EXPECT_THROW(effective_tile_side(100, 100, 2), std::invalid_argument);
+  EXPECT_EQ(effective_tile_side(5000, 300, 0, Method::mcmd), 513);
+  EXPECT_EQ(effective_tile_side(5000, 300, 0, Method::paper_ds), 129);
+  EXPECT_EQ(effective_tile_side(100, 60, 0, Method::mcmd), 129);
+  EXPECT_EQ(effective_tile_side(1, 1, 0, Method::mcmd), 3);
+  EXPECT_EQ(effective_tile_side(5000, 300, 257, Method::paper_ds), 257);
+  EXPECT_THROW(effective_tile_side(100, 100, 100, Method::mcmd), std::invalid_argument);
+  EXPECT_THROW(effective_tile_side(100, 100, 2, Method::mcmd), std::invalid_argument);
 }
 
 TEST(CoarseGuide, InterpolatesLatticeAndFillsGaps) {

@@ -34,15 +34,16 @@ struct CellRect {  // [x0, x0 + w) × [y0, y0 + h)
   int x0 = 0, y0 = 0, w = 0, h = 0;
 };
 
-// How a width × height raster must be chunked for these tiling parameters.
+// How a width × height raster must be chunked for these tiling parameters
+// and this method (its default tile side).
 struct ChunkGrid {
   int step = 0;         // chunk sides (but the last ones) are multiples of it: the tile step P
   int min_side = 0;     // and at least this long
-  int margin = 0;       // cells read around a chunk (max(P + 2, guide stride / 2))
+  int margin = 0;       // cells read around a chunk: what its windows, lone voids and guide blocks reach
   bool whole = false;   // one tile: the raster must be one chunk
   int guide_stride = 0; // the coarse guide's stride S (0: one tile, no guide)
 };
-ChunkGrid chunk_grid(int width, int height, const TilingParams& tiling);
+ChunkGrid chunk_grid(int width, int height, const TilingParams& tiling, Method method);
 
 struct ChunkSummary {
   CellRect own;
@@ -56,7 +57,7 @@ struct ChunkSummary {
 };
 
 // Step 1. `raster` is the whole raster's geometry (reads are asked only near `own`).
-ChunkSummary summarize_chunk(const RasterAccess& raster, const TilingParams& tiling, CellRect own);
+ChunkSummary summarize_chunk(const RasterAccess& raster, const TilingParams& tiling, Method method, CellRect own);
 
 // Step 2. Throws std::invalid_argument when no cell is known, or for what
 // the chunked fill does not handle.

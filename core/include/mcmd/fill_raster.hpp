@@ -25,10 +25,11 @@ bool fills_whole(int width, int height, const FillParams& params, const TilingPa
 void fill_raster(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
                  const ProgressFn& progress = {}, const RasterFillHooks& hooks = {});
 
-// The tile side actually used: `requested` (0 = default), reduced to the
-// smallest 2^k + 1 (k >= 1) that covers max(width, height) when that is smaller.
-// Throws std::invalid_argument when requested is neither 0 nor 2^k + 1.
-int effective_tile_side(int width, int height, int requested);
+// The tile side actually used: `requested` (0 = default_tile_side(method)),
+// reduced to the smallest 2^k + 1 (k >= 1) that covers max(width, height)
+// when that is smaller. Throws std::invalid_argument when requested is
+// neither 0 nor 2^k + 1.
+int effective_tile_side(int width, int height, int requested, Method method);
 
 // Worker threads actually used for `requested` (0 = hardware concurrency).
 int effective_threads(int requested);

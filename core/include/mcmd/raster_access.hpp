@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mcmd/lines.hpp"
+#include "mcmd/params.hpp"
 
 namespace mcmd {
 
@@ -28,7 +29,7 @@ struct RasterAccess {
 };
 
 struct TilingParams {
-  int tile_side = 0;          // 0 = default (kDefaultTileSide), else 2^k + 1, k >= 1
+  int tile_side = 0;          // 0 = default (default_tile_side), else 2^k + 1, k >= 1
   int threads = 0;            // 0 = all cores
   double max_distance = 0.0;  // cells; 0 = unlimited (see docs/tiling.md for its exactness)
   // Tiles even where the raster is small enough to fill whole (docs/tiling.md,
@@ -40,7 +41,12 @@ struct TilingParams {
   std::size_t max_void_cells = 0;
 };
 
-constexpr int kDefaultTileSide = 129;  // measured: see docs/tiling.md
+// Default tile sides, measured (docs/tiling.md): the default method solves a
+// tile's region and one band, so a large tile solves each cell about once;
+// the paper methods subdivide a 2^n+1 window of twice the tile.
+constexpr int kDefaultTileSide = 513;
+constexpr int kPaperTileSide = 129;
+constexpr int default_tile_side(Method method) { return method == Method::mcmd ? kDefaultTileSide : kPaperTileSide; }
 
 // What a run did; for tests and benchmarks.
 struct RasterFillStats {

@@ -38,8 +38,8 @@ CoarseGuide::Moments from_doubles(const double* d) {
   return CoarseGuide::Moments{d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7], d[8]};
 }
 
-TileLayout layout_of(int width, int height, const TilingParams& tiling) {
-  return TileLayout(width, height, effective_tile_side(width, height, tiling.tile_side));
+TileLayout layout_of(int width, int height, const TilingParams& tiling, Method method) {
+  return TileLayout(width, height, effective_tile_side(width, height, tiling.tile_side, method));
 }
 
 bool inside(int x, int y, const CellRect& r) { return x >= r.x0 && x < r.x0 + r.w && y >= r.y0 && y < r.y0 + r.h; }
@@ -144,22 +144,25 @@ WindowResult expanded(const WindowSolution& s) {
 
 }  // namespace
 
-ChunkGrid chunk_grid(int width, int height, const TilingParams& tiling) {
-  const TileLayout layout = layout_of(width, height, tiling);
+ChunkGrid chunk_grid(int width, int height, const TilingParams& tiling, Method method) {
+  const TileLayout layout = layout_of(width, height, tiling, method);
   ChunkGrid g;
   g.step = layout.x.step();
   g.whole = layout.tile_count() == 1;
   g.guide_stride = g.whole ? 0 : guide_stride(width, height);
-  g.margin = std::max(g.step + 2, g.guide_stride / 2);
+  // Reads of the windows and lone voids a chunk solves; the guide's blocks.
+  const int reach = std::max(window_reach(layout, method),
+                             method == Method::mcmd ? detail::small_grid_reach(layout) : 0);
+  g.margin = std::max(reach + 2, g.guide_stride / 2);
   g.min_side = g.margin;
   return g;
 }
 
-ChunkSummary summarize_chunk(const RasterAccess& raster, const TilingParams& tiling, CellRect own) {
+ChunkSummary summarize_chunk(const RasterAccess& raster, const TilingParams& tiling, Method method, CellRect own) {
   const int W = raster.width, H = raster.height;
   if (own.w < 1 || own.h < 1 || own.x0 < 0 || own.y0 < 0 || own.x0 + own.w > W || own.y0 + own.h > H)
     throw std::invalid_argument("the chunk does not lie inside the raster");
-  const ChunkGrid grid = chunk_grid(W, H, tiling);
+  const ChunkGrid grid = chunk_grid(W, H, tiling, method);
   ChunkSummary s;
   s.own = own;
   const int stride = grid.guide_stride;

@@ -30,6 +30,11 @@ int max_small_extent(const TileLayout& layout) {
   return e;
 }
 
+int small_grid_reach(const TileLayout& layout) {
+  const int e = max_small_extent(layout);
+  return e < 1 ? 0 : ((1 << levels_for(e + 2 * small_void_margin(e))) + 1) / 2 + 1;
+}
+
 ComponentGrid component_grid(const Box& box, int width, int height) {
   ComponentGrid g;
   const int extent = std::max(box.width(), box.height());

@@ -39,6 +39,10 @@ struct ComponentGrid {
 };
 ComponentGrid component_grid(const Box& box, int width, int height);
 
+// How far from its centre the grid of any component solved alone reaches
+// (0: none is solved alone).
+int small_grid_reach(const TileLayout& layout);
+
 // Fill the component (its grid read as `z`/`valid` over g.rect). Other void
 // cells of the grid, and component cells farther than `radius` from every
 // known cell, are pinned to the guide. Returns the values of the component's

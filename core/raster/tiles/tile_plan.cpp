@@ -41,8 +41,9 @@ void skip_left_voids(const LeftVoids& left, ScanResult& scan, std::vector<SmallC
 
 namespace {
 
-void start_plan(int width, int height, const TilingParams& tiling, RasterFillStats& stats, TilePlan& plan) {
-  plan.layout = TileLayout(width, height, effective_tile_side(width, height, tiling.tile_side));
+void start_plan(int width, int height, Method method, const TilingParams& tiling, RasterFillStats& stats,
+                TilePlan& plan) {
+  plan.layout = TileLayout(width, height, effective_tile_side(width, height, tiling.tile_side, method));
   const TileLayout& layout = plan.layout;
   plan.single = layout.tile_count() == 1;
   if (!plan.single) plan.guide = CoarseGuide(width, height, guide_stride(width, height));
@@ -132,7 +133,7 @@ RasterAccess void_pattern(int width, int height, const RunsByRow& voids) {
 
 bool plan_tiles(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
                 const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan, const LeftVoids& left) {
-  start_plan(raster.width, raster.height, tiling, stats, plan);
+  start_plan(raster.width, raster.height, params.method, tiling, stats, plan);
   std::optional<ComponentFinder> finder = component_finder(plan, params, tiling);
   ScanResult scan = scan_raster(raster, plan.layout, plan.single ? nullptr : &plan.guide,
                                 sub_progress(progress, 0.0, 2.0 / 3), finder ? &*finder : nullptr, &left);
@@ -141,7 +142,7 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
 
 bool plan_from_parts(const PlanParts& parts, const FillParams& params, const TilingParams& tiling,
                      RasterFillStats& stats, TilePlan& plan, LeftVoids& left) {
-  start_plan(parts.width, parts.height, tiling, stats, plan);
+  start_plan(parts.width, parts.height, params.method, tiling, stats, plan);
   if (!plan.single) parts.set_guide(plan.guide);
   std::optional<ComponentFinder> finder = component_finder(plan, params, tiling);
   const RasterAccess pattern = void_pattern(parts.width, parts.height, parts.voids);

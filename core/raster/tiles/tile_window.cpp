@@ -173,6 +173,10 @@ bool solves_region(const TileLayout& layout, Method method) {
   return method == Method::mcmd && layout.tile_count() > 1;
 }
 
+int window_reach(const TileLayout& layout, Method method) {
+  return solves_region(layout, method) ? layout.x.band() - 1 + region_margin(layout) : layout.x.step() / 2;
+}
+
 double guide_radius(const TileLayout& layout, const CoarseGuide& guide) {
   // 8 guide strides (measured: 4 and 16 were worse on blob voids), at most
   // kGuideRadiusCap, kept inside the halo so every window that outputs a cell

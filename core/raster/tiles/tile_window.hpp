@@ -35,6 +35,9 @@ ReadRect window_read_rect(const TileLayout& layout, int tx, int ty, Method metho
 // True when tile windows of `method` are region windows (above).
 bool solves_region(const TileLayout& layout, Method method);
 
+// How far beyond its tile's cells a tile's window reads.
+int window_reach(const TileLayout& layout, Method method);
+
 // The guide radius never exceeds this many cells: what it is at T = 129,
 // where the halo bounds it, and what blob voids measured best at larger tiles
 // (docs/tiling.md).
