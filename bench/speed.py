@@ -57,7 +57,7 @@ RUNS = {            # name -> extra mcmd args (None = gdal, "floor" = gdal_trans
 }
 LABEL = {"mcmd": "mcmd (default)", "mcmd-t1": "mcmd -threads 1", "gdal-si2": "gdal -si 2",
          "floor": "gdal_translate (I/O floor)",
-         "mcmd-t2": "mcmd -threads 2", "mcmd-tile257": "mcmd -tile 257"}
+         "mcmd-t2": "mcmd -threads 2", "mcmd-tile257": "mcmd -tile 257", "mcmd-rs-auto": "mcmd -rs auto"}
 
 
 log = V.log
@@ -176,6 +176,8 @@ def main(argv=None):
                 todo.append(("mcmd-t2", ["-threads", "2"]))
             if kind == "blobs":
                 todo.append(("mcmd-tile257", ["-tile", "257"]))
+            if cid in (f"{BIG}__blobs", f"{BIG}__kept3"):  # what roughness costs on the mosaics
+                todo.append(("mcmd-rs-auto", ["-rs", "auto"]))
         specs = []
         for name, extra in todo:
             out = os.path.join(work, "out", f"{cid}__{name}.tif")
@@ -339,7 +341,24 @@ def write_report(a, runs, results, infos, mcmd_msg):
                 V.fmt(rt.get("rss_mb") if rt else None, ".0f")]) + " |")
         L.append("")
 
-    chk = done_checks(a, results, tile, det)
+    rough = [(cid, results.get((cid, "mcmd")), results.get((cid, "mcmd-rs-auto")))
+             for cid, _, _ in a.cases if results.get((cid, "mcmd-rs-auto"))]
+    if rough:
+        L.append("## Roughness: `-rs auto` vs the smooth fill")
+        L.append("")
+        L.append("| case | smooth s | smooth CPU | -rs auto s | -rs auto CPU | ratio (wall) | RMSE smooth "
+                 "| RMSE -rs auto |")
+        L.append("|---|---|---|---|---|---|---|---|")
+        for cid, rd, rr in rough:
+            okr = rd and rr and rd.get("ok") and rr.get("ok")
+            L.append("| " + " | ".join([
+                cid, t_str(rd), cpu(rd), t_str(rr), cpu(rr),
+                V.fmt(rr["wall_s"] / rd["wall_s"] if okr else None, ".2f") + "×",
+                V.fmt(rd.get("rmse") if rd else None, ".3f"),
+                V.fmt(rr.get("rmse") if rr else None, ".3f")]) + " |")
+        L.append("")
+
+    chk = done_checks(a, results, tile, det, rough)
     if chk:
         L.append("## Targets (checked automatically)")
         L.append("")
@@ -393,7 +412,7 @@ def write_report(a, runs, results, infos, mcmd_msg):
         f.write("\n".join(L))
 
 
-def done_checks(a, results, tile, det):
+def done_checks(a, results, tile, det, rough):
     rows = []
 
     def row(name, val, target, ok):
@@ -443,6 +462,10 @@ def done_checks(a, results, tile, det):
         if r1 and r2 and r1.get("ok") and r2.get("ok"):
             row(f"-threads 1 == -threads 2, {cid}", "identical" if r1["md5"] == r2["md5"]
                 else "differ", "identical", r1["md5"] == r2["md5"])
+    for cid, rd, rr in rough:
+        if ok(rd) and ok(rr):
+            q = rr["wall_s"] / rd["wall_s"]
+            row(f"-rs auto ÷ smooth (wall), {cid}", f"{q:.2f}×", "≤ 1.10×", q <= 1.10)
     return rows
 
 
