@@ -44,13 +44,18 @@ def main() -> None:
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--chunk", type=int, default=2048)
     a = ap.parse_args()
+    # The cluster's workers and the command import this checkout's build,
+    # not whichever checkout registered itself last (scripts/install-python.sh).
+    package = os.path.join(V.ROOT_DIR, "build", "python")
+    os.environ["PYTHONPATH"] = os.pathsep.join(p for p in (package, os.environ.get("PYTHONPATH")) if p)
+    sys.path.insert(0, package)
     from distributed import Client, LocalCluster
     work = os.path.join(V.BENCH_DIR, "work", "dask")
     os.makedirs(work, exist_ok=True)
     src = os.path.join(work, f"{DEM}__blobs__s0.tif")
     info = V.make_voided(os.path.join(V.DEM_DIR, DEM + ".tif"), src, "blobs", 0)
     cli_out, dask_out = os.path.join(work, "cli.tif"), os.path.join(work, "dask.tif")
-    env = dict(os.environ, PYTHONPATH=os.path.join(V.ROOT_DIR, "build", "python"))
+    env = dict(os.environ)
     rows = {"cli": [], "dask": []}
     for run in range(a.runs):
         r = V.run_timed([a.mcmd, "-q", src, cli_out])

@@ -120,11 +120,13 @@ field per void; a larger one, or a paper method, is streamed through square
 tiles, and memory depends on the tile size and thread count, not on the raster
 size; docs/tiling.md):
   -tile size       Tile side in cells when tiling, 2^n+1 (e.g. 129, 257, 513);
-                   0 = automatic (129, or less for a raster that fits in a
-                   smaller tile). -o TILING=ALWAYS tiles small rasters too.
-                   Larger tiles need more memory per thread (about 25 MB per
-                   thread at 257, 90 MB at 513). The result is bit-identical
-                   for a given tile size, whatever the thread count.
+                   0 = automatic (513 with -method mcmd, 129 with a paper
+                   method, or less for a raster that fits in a smaller
+                   tile). -o TILING=ALWAYS tiles small rasters too. Memory
+                   per thread: about 40 MB at 513 with -method mcmd; a
+                   paper method solves a window twice the tile (about 25 MB
+                   at 257, 90 MB at 513). The result is bit-identical for a
+                   given tile size, whatever the thread count.
   -threads n       Worker threads solving tiles or voids, a number or ALL_CPUS
                    (default).
   GDAL_CACHEMAX    GDAL's block cache; 64 MB unless set (--config or environment).
