@@ -83,7 +83,6 @@ struct WindowRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   int w() const { return x1 - x0; }
   int h() const { return y1 - y0; }
-  bool holds(int u, int v) const { return u >= x0 && u < x1 && v >= y0 && v < y1; }
 };
 
 // What the default method solves of a region window: the tile's output
@@ -110,12 +109,12 @@ double near_bound(const WindowCells& c, const WindowRect& rect, double reach) {
   return all_within_chebyshev(sub.data(), rect.w(), rect.h(), r) ? r * std::sqrt(2.0) : -1.0;
 }
 
-// Pins unknown cells of `ring` (the part of the window solved) to the guide:
-// with `dist` (the distance to the window's known cells; empty when no cell is
-// that far), those farther than `radius`, since deep inside voids the guide
-// is the surface; then the unknown cells of its outer 2-cell ring, so that the
-// solve is constrained. Returns the largest distance left unpinned.
-double pin_to_guide(WindowCells& c, const std::vector<double>& dist, double radius, const WindowRect& ring,
+// Pins unknown cells of `solved` (the part of the window solved) to the
+// guide: with `dist` (the distance to the window's known cells; empty when no
+// cell is that far), those farther than `radius`, since deep inside voids the
+// guide is the surface; then the unknown cells of its outer 2-cell ring, so
+// that the solve is constrained. Returns the largest distance left unpinned.
+double pin_to_guide(WindowCells& c, const std::vector<double>& dist, double radius, const WindowRect& solved,
                     const CoarseGuide& guide) {
   const auto pin = [&](int u, int v) {
     const std::size_t i = c.index(u, v);
@@ -124,15 +123,16 @@ double pin_to_guide(WindowCells& c, const std::vector<double>& dist, double radi
   };
   double farthest = 0.0;
   if (!dist.empty())
-    for (int v = ring.y0; v < ring.y1; ++v)
-      for (int u = ring.x0; u < ring.x1; ++u) {
+    for (int v = solved.y0; v < solved.y1; ++v)
+      for (int u = solved.x0; u < solved.x1; ++u) {
         const double d = dist[c.index(u, v)];
         if (d > radius) pin(u, v);
-        else if (ring.holds(u, v)) farthest = std::max(farthest, d);
+        else farthest = std::max(farthest, d);
       }
-  for (int v = ring.y0; v < ring.y1; ++v) {
-    const bool ring_row = v < ring.y0 + 2 || v >= ring.y1 - 2;
-    for (int u = ring.x0; u < ring.x1; u = ring_row || u != ring.x0 + 1 ? u + 1 : std::max(u + 1, ring.x1 - 2))
+  for (int v = solved.y0; v < solved.y1; ++v) {
+    const bool ring_row = v < solved.y0 + 2 || v >= solved.y1 - 2;
+    const int skip_to = std::max(solved.x0 + 2, solved.x1 - 2);  // past the inside of a row
+    for (int u = solved.x0; u < solved.x1; u = ring_row || u != solved.x0 + 1 ? u + 1 : skip_to)
       if (c.state[c.index(u, v)] == CellState::unknown) pin(u, v);
   }
   return farthest;
