@@ -233,6 +233,16 @@ def t_str(r):
     return f"{r['wall_s']:.2f}"
 
 
+def cpu(r):
+    return V.fmt(r.get("cpu_s"), ".2f") if r and r.get("ok") else "—"
+
+
+def beside_default(a, results, name):
+    """(case, default run, `name` run) for the cases where `name` ran."""
+    return [(cid, results.get((cid, "mcmd")), results.get((cid, name)))
+            for cid, _, _ in a.cases if results.get((cid, name))]
+
+
 def speedup(r, g):
     if not r or not r.get("ok") or not g:
         return None
@@ -278,9 +288,6 @@ def write_report(a, runs, results, infos, mcmd_msg):
         info = infos.get(cid, {})
         m, t1, g, fl = (results.get((cid, k)) for k in ("mcmd", "mcmd-t1", "gdal-si2", "floor"))
 
-        def cpu(r):
-            return V.fmt(r.get("cpu_s"), ".2f") if r and r.get("ok") else "—"
-
         def cpu_ratio(r, g):
             ok = r and g and r.get("ok") and g.get("ok") and r.get("cpu_s") and g.get("cpu_s")
             return f"{g['cpu_s'] / r['cpu_s']:.2f}×" if ok else "—"
@@ -322,8 +329,7 @@ def write_report(a, runs, results, infos, mcmd_msg):
             L.append(f"| {cid} | `{md[0]}` | `{md[1]}` | `{md[2]}` | "
                      f"{'yes' if same else 'NO'} |")
         L.append("")
-    tile = [(cid, results.get((cid, "mcmd")), results.get((cid, "mcmd-tile257")))
-            for cid, _, _ in a.cases if results.get((cid, "mcmd-tile257"))]
+    tile = beside_default(a, results, "mcmd-tile257")
     if tile:
         L.append("## Tile size: `-tile 257` vs default, blob voids (RMSE over removed cells)")
         L.append("")
@@ -341,8 +347,7 @@ def write_report(a, runs, results, infos, mcmd_msg):
                 V.fmt(rt.get("rss_mb") if rt else None, ".0f")]) + " |")
         L.append("")
 
-    rough = [(cid, results.get((cid, "mcmd")), results.get((cid, "mcmd-rs-auto")))
-             for cid, _, _ in a.cases if results.get((cid, "mcmd-rs-auto"))]
+    rough = beside_default(a, results, "mcmd-rs-auto")
     if rough:
         L.append("## Roughness: `-rs auto` vs the smooth fill")
         L.append("")

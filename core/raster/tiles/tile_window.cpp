@@ -209,15 +209,15 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
   WindowCells c = load_window(layout, in, params.method);
   const WindowRect rect = region ? solved_rect(layout, in, c.span) : WindowRect{0, 0, c.span.w, c.span.h};
 
+  const double radius = guided ? guide_radius(layout, *guide) : 0.0;
   std::vector<double> dist;  // to the nearest known cell of the window
   double farthest = -1.0;    // a bound on it over rect
   // Scattered samples: every cell near data, so none is pinned to the guide
   // and the transform is spared.
-  if (region && max_distance <= 0)
-    farthest = near_bound(c, rect, std::min(guide_radius(layout, *guide), ThinPlateSchedule{}.shallow_reach));
+  if (region && max_distance <= 0) farthest = near_bound(c, rect, std::min(radius, ThinPlateSchedule{}.shallow_reach));
   if ((guided || max_distance > 0) && farthest < 0) dist = distance_to_valid(c.known.data(), c.span.w, c.span.h);
   if (guided) {
-    const double unpinned = pin_to_guide(c, dist, guide_radius(layout, *guide), rect, *guide);
+    const double unpinned = pin_to_guide(c, dist, radius, rect, *guide);
     if (!dist.empty()) farthest = unpinned;
   }
   morph::place_line_cells(c.span.w, c.span.h, c.span.x0, c.span.y0, c.z.data(), c.state.data(), lines);
