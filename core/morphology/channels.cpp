@@ -222,16 +222,15 @@ std::vector<RiverCell> route_channels(const ChannelField& f, double min_inflow) 
                    [&](std::int32_t a, std::int32_t b) { return f.inflow[a] > f.inflow[b]; });
   const std::int32_t lowest =
       *std::min_element(rim.begin(), rim.end(), [&](std::int32_t a, std::int32_t b) { return f.z[a] < f.z[b]; });
-  std::size_t own_cells = 0;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(f.w) * f.h; ++i) own_cells += f.own[i] ? 1 : 0;
-  const double radius = std::sqrt(static_cast<double>(own_cells) / M_PI);
   const std::vector<std::int32_t> drainage = fill_drainage(f);
-  const Geometry g{f.w, f.h};
   Router router(f);
   for (const std::int32_t in : inflows) {
-    std::int32_t out = lowest;
+    // The smooth fill's exit wherever it is lower than the inflow, else the
+    // lowest rim cell: measured against also asking the exit to lie half a
+    // radius away, blob F1 0.516 → 0.526 (one blob's RMSE −38 %), valley
+    // voids unchanged (docs/morphology.md).
     const std::int32_t fill_out = fill_outlet(drainage, f, in);
-    if (fill_out >= 0 && f.z[fill_out] < f.z[in] && g.distance(fill_out, in) > 0.5 * radius) out = fill_out;
+    const std::int32_t out = fill_out >= 0 && f.z[fill_out] < f.z[in] ? fill_out : lowest;
     if (out == in || !(f.z[out] < f.z[in])) continue;
     router.route(in, out);
   }
