@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mcmd/fill_raster.hpp"
+#include "morphology/channels.hpp"
 #include "morphology/flow.hpp"
 #include "morphology/lines.hpp"
 #include "morphology/radix_heap.hpp"
@@ -165,6 +166,32 @@ TEST(MorphAuto, TheDefaultFillDamsTheSameValley) {  // what the test above guard
   int new_ponds = 0;
   for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
   EXPECT_GT(new_ponds, 100);
+}
+
+// A long narrow void across a plane that falls south and, gently, east:
+// its rim's lowest cell is at the far east end, while water entering from
+// the north crosses the void straight south. The channel must cross too.
+TEST(MorphAuto, AChannelLeavesWhereTheFillDrainsNotAtTheLowestRimCell) {
+  const int w = 120, h = 40;
+  std::vector<double> z(static_cast<std::size_t>(w) * h);
+  std::vector<CellState> state(z.size(), CellState::known);
+  std::vector<std::uint8_t> own(z.size(), 0);
+  std::vector<double> inflow(z.size(), 0.0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      z[i] = 500.0 - 2.0 * y - 0.2 * x;  // the smooth fill, in the void: the plane
+      if (y >= 18 && y <= 22 && x >= 5 && x <= 114) own[i] = 1, state[i] = CellState::unknown;
+    }
+  const int in_x = 20, in_y = 17;
+  inflow[static_cast<std::size_t>(in_y) * w + in_x] = 5000.0;
+  const std::vector<morph::RiverCell> river =
+      morph::route_channels(morph::ChannelField{w, h, z.data(), state.data(), own.data(), inflow.data()}, 100.0);
+  ASSERT_FALSE(river.empty());
+  for (const morph::RiverCell& r : river) {
+    EXPECT_LE(std::abs(r.cell % w - in_x), 1) << "river cell at x " << r.cell % w;  // not along the void eastwards
+    EXPECT_LT(r.z, z[static_cast<std::size_t>(in_y) * w + in_x]);
+  }
 }
 
 // A plane falling south, and a river drawn across it that the terrain's own
