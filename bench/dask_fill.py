@@ -55,7 +55,6 @@ def main() -> None:
     src = os.path.join(work, f"{DEM}__blobs__s0.tif")
     info = V.make_voided(os.path.join(V.DEM_DIR, DEM + ".tif"), src, "blobs", 0)
     cli_out, dask_out = os.path.join(work, "cli.tif"), os.path.join(work, "dask.tif")
-    env = dict(os.environ)
     rows = {"cli": [], "dask": []}
     for run in range(a.runs):
         r = V.run_timed([a.mcmd, "-q", src, cli_out])
@@ -66,7 +65,7 @@ def main() -> None:
             client.wait_for_workers(2)
             before = client.run(worker_stats)
             r = V.run_timed([sys.executable, "-m", "mcmd.dask", src, dask_out, "--scheduler",
-                             cluster.scheduler_address, "--chunk", str(a.chunk), "-q"], env=env)
+                             cluster.scheduler_address, "--chunk", str(a.chunk), "-q"])
             assert r["rc"] == 0, r["stderr"]
             after = client.run(worker_stats)
             worker_cpu = sum(after[w][0] - before.get(w, (0, 0))[0] for w in after)

@@ -33,11 +33,12 @@ struct RiverCell {
 
 // Every inflow of at least min_inflow cells, largest first, is routed to
 // its outlet: where the smooth fill's own drainage leaves the component, if
-// that is lower than the inflow, else the lowest cell of the component's rim
-// (the spill point of a lake there). The path is the least-cost path through the component's
-// cells, a step costing exp(8·(fill − lowest)/(fill's range)) (it keeps to
-// the fill's valley floor), and it ends where it meets a path already
-// routed (a tributary joins). Its heights fall from the inflow's to the
+// that is lower than the inflow, else the lowest cell of the component's
+// rim (the spill point of a lake there). The path is the least-cost path
+// through the component's cells, a step costing
+// exp(8·(fill − lowest)/(fill's range)) (it keeps to the fill's valley
+// floor), and it ends where it meets a path already routed (a tributary
+// joins). Its heights fall from the inflow's to the
 // outlet's (or the junction's): the mean of the straight fall and the
 // least-squares non-increasing fit of the fill along the path.
 // Post: cells are own cells, each once, heights finite; empty when no
