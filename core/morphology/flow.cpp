@@ -1,5 +1,6 @@
 #include "morphology/flow.hpp"
 
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -23,6 +24,14 @@ void for_each_neighbour(int x, int y, int w, int h, F&& f) {
   }
 }
 
+// The next double above a finite v: std::nextafter(v, +inf) without its
+// library call.
+double next_above(double v) {
+  if (v == 0.0) return std::numeric_limits<double>::denorm_min();
+  const auto b = std::bit_cast<std::uint64_t>(v);
+  return std::bit_cast<double>(v > 0 ? b + 1 : b - 1);
+}
+
 bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
 
 // A land cell where water can leave: the border, or beside an off or sink cell.
@@ -43,15 +52,11 @@ namespace {
 // that most of an integer DEM's flats never enter the heap.
 class Flood {
  public:
-  Flood(const double* z, int w, int h, const FlowCell* kind, std::vector<std::int32_t>* order,
-        std::vector<std::int32_t>* from)
-      : z_(z), w_(w), h_(h), order_(order), from_(from), level_(cells(), std::numeric_limits<double>::quiet_NaN()),
-        done_(cells()) {
+  Flood(const double* z, int w, int h, const FlowCell* kind)
+      : z_(z), w_(w), h_(h), level_(cells(), std::numeric_limits<double>::quiet_NaN()), done_(cells()) {
     // One byte per cell for the neighbour tests, most of which find a cell
     // already reached (or not land).
     for (std::size_t i = 0; i < cells(); ++i) done_[i] = kind[i] != FlowCell::land;
-    if (order_) order_->clear(), order_->reserve(cells());
-    if (from_) from_->assign(cells(), -1);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         const std::int32_t i = y * w + x;
@@ -64,13 +69,12 @@ class Flood {
 
   std::vector<double> run() && {
     for (std::int32_t i; next(i);) {
-      if (order_) order_->push_back(i);
-      const double above = std::nextafter(level_[i], std::numeric_limits<double>::infinity());
+      const double above = next_above(level_[i]);
       const int x = i % w_, y = i / w_;
       if (x > 0 && y > 0 && x < w_ - 1 && y < h_ - 1) {  // interior: no bounds tests
-        for (const std::int32_t d : {1, w_ + 1, w_, w_ - 1, -1, -w_ - 1, -w_, -w_ + 1}) reach(i + d, i, above);
+        for (const std::int32_t d : {1, w_ + 1, w_, w_ - 1, -1, -w_ - 1, -w_, -w_ + 1}) reach(i + d, above);
       } else {
-        for_each_neighbour(x, y, w_, h_, [&](int, std::int32_t j) { reach(j, i, above); });
+        for_each_neighbour(x, y, w_, h_, [&](int, std::int32_t j) { reach(j, above); });
       }
     }
     return std::move(level_);
@@ -90,10 +94,9 @@ class Flood {
     return true;
   }
 
-  void reach(std::int32_t j, std::int32_t i, double above) {
+  void reach(std::int32_t j, double above) {
     if (done_[j]) return;
     done_[j] = 1;
-    if (from_) (*from_)[j] = i;
     if (z_[j] < above) {
       level_[j] = above;
       pit_.push_back(j);
@@ -105,8 +108,6 @@ class Flood {
 
   const double* z_;
   int w_, h_;
-  std::vector<std::int32_t>* order_;
-  std::vector<std::int32_t>* from_;
   std::vector<double> level_;
   std::vector<std::uint8_t> done_;
   RadixHeap heap_;
@@ -137,16 +138,15 @@ std::int32_t receiver_of(std::int32_t i, int x, int y, int w, int h, const FlowC
 
 }  // namespace
 
-std::vector<double> flood_levels(const double* z, int w, int h, const FlowCell* kind,
-                                 std::vector<std::int32_t>* order, std::vector<std::int32_t>* from) {
-  return Flood(z, w, h, kind, order, from).run();
+std::vector<double> flood_levels(const double* z, int w, int h, const FlowCell* kind) {
+  return Flood(z, w, h, kind).run();
 }
 
 Flow route(const double* z, int w, int h, const FlowCell* kind) {
   Flow f;
   f.w = w;
   f.h = h;
-  const std::vector<double> level = flood_levels(z, w, h, kind, &f.order);
+  const std::vector<double> level = flood_levels(z, w, h, kind);
   f.receiver.assign(static_cast<std::size_t>(w) * h, -1);
   for (int y = 0; y < h; ++y)  // raster order: the neighbours' levels are near in memory
     for (int x = 0; x < w; ++x) {
@@ -157,24 +157,29 @@ Flow route(const double* z, int w, int h, const FlowCell* kind) {
 }
 
 std::vector<double> accumulation(const Flow& flow, const FlowCell* kind) {
-  // In topological order (Kahn): a cell once every donor has given.
+  // Kahn's topological order without a queue: from each cell that has no
+  // donor, walk down until a cell still waits for one. Sums of whole
+  // numbers: any order gives the same bits. Measured on 1025² DEMs, half
+  // the time of a ready list in the flood's order.
   const std::size_t n = flow.receiver.size();
   std::vector<double> a(n, 0.0);
   std::vector<std::uint8_t> donors(n, 0);  // at most 8
-  for (const std::int32_t i : flow.order) {
-    a[i] = 1.0;
-    if (const std::int32_t r = flow.receiver[i]; r >= 0) ++donors[r];
-  }
-  std::vector<std::int32_t> ready;
-  for (const std::int32_t i : flow.order)
-    if (donors[i] == 0) ready.push_back(i);
-  while (!ready.empty()) {
-    const std::int32_t i = ready.back();
-    ready.pop_back();
-    const std::int32_t r = flow.receiver[i];
-    if (r < 0 || kind[r] == FlowCell::off) continue;
-    a[r] += a[i];
-    if (--donors[r] == 0 && kind[r] == FlowCell::land) ready.push_back(r);
+  for (std::size_t i = 0; i < n; ++i)
+    if (kind[i] == FlowCell::land) {
+      a[i] = 1.0;
+      if (const std::int32_t r = flow.receiver[i]; r >= 0) ++donors[r];
+    }
+  constexpr std::uint8_t kGiven = 0xFF;  // passed on: never walked again
+  for (std::size_t s = 0; s < n; ++s) {
+    if (kind[s] != FlowCell::land || donors[s] != 0) continue;
+    for (std::int32_t i = static_cast<std::int32_t>(s);;) {
+      donors[i] = kGiven;
+      const std::int32_t r = flow.receiver[i];
+      if (r < 0 || kind[r] == FlowCell::off) break;
+      a[r] += a[i];
+      if (--donors[r] != 0 || kind[r] != FlowCell::land) break;
+      i = r;
+    }
   }
   return a;
 }

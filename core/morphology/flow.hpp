@@ -23,19 +23,15 @@ struct Flow {
   // leaves the field (a seed with no lower neighbour) and for off and sink
   // cells.
   std::vector<std::int32_t> receiver;
-  // The land cells in the flood's order.
-  std::vector<std::int32_t> order;
 };
 
 // Levels of Priority-Flood with ε over the land cells (Barnes, Lehman &
 // Mulla 2014, with their queue for the cells it raises): every land cell
 // gets max(its z, the next double above the level of the cell that reached
 // it), so every land cell drains. Seeds (outlets): land cells on the
-// field's border or beside an off or sink cell. With `from`, the cell that
-// reached each land cell (-1 for seeds). Pre: z and kind hold w·h cells.
-std::vector<double> flood_levels(const double* z, int w, int h, const FlowCell* kind,
-                                 std::vector<std::int32_t>* order = nullptr,
-                                 std::vector<std::int32_t>* from = nullptr);
+// field's border or beside an off or sink cell. Pre: z and kind hold w·h
+// cells.
+std::vector<double> flood_levels(const double* z, int w, int h, const FlowCell* kind);
 
 // D8 flow on the flooded levels (Flow::receiver): every land cell drains.
 // Sink cells' z is not read. Pre: as flood_levels.

@@ -64,12 +64,13 @@ class RadixHeap {
     std::uint64_t lo = bucket_[i][0].key;
     for (const Item& it : bucket_[i]) lo = std::min(lo, it.key);
     last_ = lo;
-    std::vector<Item> moving;
-    moving.swap(bucket_[i]);
-    for (const Item& it : moving) bucket_[bucket_of(it.key)].push_back(it);
+    moving_.swap(bucket_[i]);  // the emptied bucket keeps the scratch's capacity
+    for (const Item& it : moving_) bucket_[bucket_of(it.key)].push_back(it);
+    moving_.clear();
   }
 
   std::array<std::vector<Item>, 65> bucket_;
+  std::vector<Item> moving_;  // refill's scratch, reused: no allocation per refill
   std::uint64_t last_ = 0;
   std::size_t next_ = 0;  // read position in bucket_[0]
   std::size_t size_ = 0;

@@ -128,6 +128,34 @@ TEST(Flow, AccumulationGathersAlongTheValleyFloor) {
   EXPECT_GT(best, 0.5 * m.w * m.h);
 }
 
+// On a bumpy field with pits, flats, a void (sink) and an off cell, each
+// cell's accumulation is the number of land cells whose drainage passes
+// through it, counted by walking every cell's path to its end.
+TEST(Flow, AccumulationCountsEveryCellUpstream) {
+  const int w = 47, h = 31;
+  std::vector<double> z(static_cast<std::size_t>(w) * h);
+  std::vector<morph::FlowCell> kind(z.size(), morph::FlowCell::land);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      z[i] = std::round(20.0 * std::sin(0.4 * x) * std::cos(0.3 * y) + 0.5 * x);  // whole metres: flats
+      if (std::hypot(x - 30, y - 12) < 4) kind[i] = morph::FlowCell::sink;
+    }
+  kind[5 * w + 7] = morph::FlowCell::off;
+  const morph::Flow f = morph::route(z.data(), w, h, kind.data());
+  const std::vector<double> a = morph::accumulation(f, kind.data());
+  std::vector<double> walked(z.size(), 0.0);
+  for (std::size_t s = 0; s < z.size(); ++s) {
+    if (kind[s] != morph::FlowCell::land) continue;
+    for (std::int32_t i = static_cast<std::int32_t>(s); i >= 0 && kind[i] != morph::FlowCell::off;) {
+      walked[i] += 1.0;
+      i = kind[i] == morph::FlowCell::land ? f.receiver[i] : -1;
+    }
+  }
+  EXPECT_EQ(a, walked);
+  EXPECT_GT(*std::max_element(a.begin(), a.end()), 100.0);
+}
+
 TEST(Flow, DrainRaisesOnlyTheRaisableCellsOfAPit) {
   std::vector<double> z(25, 10.0);
   z[12] = 0.0;  // a pit in the middle of a 5×5 plateau
