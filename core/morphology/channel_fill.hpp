@@ -32,10 +32,26 @@ constexpr int kProfileHalfWidth = 8;
 // known terrain's accumulation draining into the void per cell; `lines` the
 // line cells inside the field's voids. Pre: own and inflow hold w·h entries.
 // Post: constraint cells unchanged; every unknown cell filled; with
-// channels or river lines, no own cell in a closed depression of the field.
+// channels or river lines, no own cell in a closed depression of the field;
+// routed channels only where keeps_channels.
 void fill_with_morphology(const FieldView& field, long long x0, long long y0, const std::uint8_t* own,
                           const double* inflow, const std::vector<FieldLineCell>& lines, const FillParams& params,
                           const ThinPlateSchedule& schedule, const ProgressFn& progress = {});
+
+// Drains z's own cells (drain, flow.hpp) and returns how much water they
+// held in closed depressions: the sum of the raises (height × cells).
+// Pre: z and own hold w·h cells.
+double drain_held(double* z, int w, int h, const std::uint8_t* own);
+
+// Whether fill_with_morphology keeps the fill with the routed channels: a
+// channel must drain the void, not dig a basin (a path to a wrong outlet,
+// pinned far below the smooth fill, can leave one, which the drain fills
+// flat). Refused when that fill holds (drain_held) more than twice the
+// water of the fill without them, plus a hundredth of the void's relief in
+// `smooth` per own cell; the plain fill is kept then. Pre: smooth and own
+// hold `cells` entries.
+bool keeps_channels(double routed_held, double plain_held, const double* smooth, std::size_t cells,
+                    const std::uint8_t* own);
 
 // The cross-profiles within kProfileHalfWidth cells of the line cells, at
 // the unknown cells of `state`: with u = d / kProfileHalfWidth (d: the

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mcmd/fill_raster.hpp"
+#include "morphology/channel_fill.hpp"
 #include "morphology/channels.hpp"
 #include "morphology/flow.hpp"
 #include "morphology/lines.hpp"
@@ -166,6 +167,33 @@ TEST(Flow, DrainRaisesOnlyTheRaisableCellsOfAPit) {
   EXPECT_GE(z[12], 1.0);  // raised to the level of the water held by cell 7
   EXPECT_EQ(z[7], 1.0);
   EXPECT_EQ(z[0], 10.0);
+}
+
+// A routed fill that digs a basin into the void (a channel pinned far below
+// the plain fill, ending where water cannot leave) holds far more water
+// than the plain fill, and is refused; one whose channel drains is kept.
+TEST(MorphAuto, AFillThatDigsABasinIsRefusedOneThatDrainsIsKept) {
+  const int w = 41, h = 41;
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  std::vector<std::uint8_t> own(n, 0);
+  std::vector<double> plain(n), basin(n), drains(n);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      own[i] = std::hypot(x - 20, y - 20) < 15;
+      plain[i] = 1000.0 - 2.0 * y;  // a plane falling south
+      basin[i] = plain[i] - 300.0 * std::exp(-std::pow(std::hypot(x - 20, y - 20) / 8.0, 2));  // a pit
+      drains[i] = plain[i] - 30.0 * std::exp(-std::pow((x - 20) / 2.0, 2));  // a valley south, through
+    }
+  const std::vector<double> smooth = plain;
+  const double plain_held = morph::drain_held(plain.data(), w, h, own.data());
+  const double basin_held = morph::drain_held(basin.data(), w, h, own.data());
+  const double drains_held = morph::drain_held(drains.data(), w, h, own.data());
+  EXPECT_EQ(plain_held, 0.0);
+  EXPECT_GT(basin_held, 1e4);  // raised to the spill: what the drain would fill flat
+  EXPECT_LT(drains_held, 1.0);
+  EXPECT_FALSE(morph::keeps_channels(basin_held, plain_held, smooth.data(), n, own.data()));
+  EXPECT_TRUE(morph::keeps_channels(drains_held, plain_held, smooth.data(), n, own.data()));
 }
 
 TEST(MorphAuto, ValleyThroughAVoidStaysContinuousAndDescending) {
