@@ -154,16 +154,16 @@ void fill_with_morphology(const FieldView& field, long long x0, long long y0, co
   const bool rivers_given = std::any_of(placed.begin(), placed.end(),
                                         [](const FieldLineCell& l) { return l.kind == CellState::river; });
   if (!inflow && !rivers_given) return;
+  if (rivers.empty()) return drain(field.z, field.w, field.h, own);
   const double routed_held = drain_held(field.z, field.w, field.h, own);
-  if (rivers.empty()) return;
   // The plain fill's held water, from the smooth fill: the roughness adds
   // the same small pits to both.
   std::vector<double> plain = smooth;
   shape_profiles(plain.data(), plain_state.data(), field.w, field.h, placed, params, step);
   const double plain_held = drain_held(plain.data(), field.w, field.h, own);
   if (keeps_channels(routed_held, plain_held, smooth.data(), cells, own)) return;
-  for (const RiverCell& r : rivers) field.z[r.cell] = smooth[r.cell];
   if (adds_roughness(params)) {
+    for (const RiverCell& r : rivers) field.z[r.cell] = smooth[r.cell];
     solve(plain_state, 0.9);
     shape_profiles(field.z, plain_state.data(), field.w, field.h, placed, params, step);
     drain(field.z, field.w, field.h, own);
