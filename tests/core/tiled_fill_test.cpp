@@ -258,6 +258,36 @@ TEST(TiledFill, DefaultMethodSolvesTheRegionAndOneBand) {
   }
 }
 
+// A region window solves only around the void cells it writes (grown by one
+// band, snapped to 32 cells): a void in one corner of its region leaves the
+// rest of the region unsolved, so known cells beyond that part change none of
+// the written values, although they lie within the region and its band.
+TEST(TiledFill, WindowSolvesOnlyAroundTheVoidsItWrites) {
+  MemRaster r(257, 257);
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) {
+      r.z[r.at(x, y)] = terrain(3 * x, 3 * y);
+      const int dx = x - 64, dy = y - 64;
+      r.valid[r.at(x, y)] = dx * dx + dy * dy > 36;  // a disc in the corner of window (1, 1)'s region [57, 136)
+    }
+  const TileLayout layout(r.w, r.h, 65);
+  MemRaster changed = r;
+  for (int y = 100; y < 140; ++y)
+    for (int x = 100; x < 140; ++x) changed.z[changed.at(x, y)] += 100.0;
+  const CoarseGuide guide = whole_guide(r);
+  FillParams p;
+  p.noise_unit = 1.0;
+  const WindowResult a = solve_tile(r, layout, guide, 1, 1, p), b = solve_tile(changed, layout, guide, 1, 1, p);
+  std::size_t written = 0;
+  for (std::size_t k = 0; k < a.z.size(); ++k) {
+    ASSERT_EQ(a.write[k], b.write[k]);
+    if (!a.write[k]) continue;
+    ++written;
+    EXPECT_EQ(a.z[k], b.z[k]) << "cell " << k;
+  }
+  EXPECT_EQ(written, static_cast<std::size_t>(std::count(r.valid.begin(), r.valid.end(), 0)));  // the disc
+}
+
 TEST(TiledFill, VoidLargerThanATileFills) {
   MemRaster r = terrain_raster(300, 260);
   for (int y = 20; y < 240; ++y)

@@ -85,10 +85,8 @@ JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job&
     r.values = solve_component(plan.small[job.index], in.grid, raster.width, raster.height, in.window.z.data(),
                                in.window.valid.data(), plan.guide, plan.radius, plan.params, progress, plan.lines);
   } else {
-    r.window =
-        solve_window(plan.layout, in.window, plan.guide_or_null(), plan.params, max_distance, progress, plan.lines);
-    WindowResult& w = r.window;
-    plan.small_runs.clear(w.xs.begin, w.ys.begin, w.xs.size(), w.ys.size(), w.write.data());
+    r.window = solve_window(plan.layout, in.window, plan.guide_or_null(), plan.params, max_distance, progress,
+                            plan.lines, &plan.small_runs);
   }
   return r;
 }

@@ -97,6 +97,52 @@ WindowRect solved_rect(const TileLayout& layout, const WindowInput& in, const Wi
                     std::min(span.w, rx.end - span.x0 + bx), std::min(span.h, ry.end - span.y0 + by)};
 }
 
+// Where a region window's solve may start and end: on multiples of this
+// (raster coordinates), so that the solver's coarse lattices fall on the same
+// cells whatever the voids' extent. Unsnapped, the 4801² blobs moved by ±0.7 %
+// in RMSE with the margin; snapped, by 0.05 %.
+constexpr int kFocusSnap = 32;
+
+int snap_down(int v) { return (v >= 0 ? v : v - (kFocusSnap - 1)) / kFocusSnap * kFocusSnap; }
+int snap_up(int v) { return -snap_down(-v); }
+
+// What a region window needs to solve: the void cells of its output region
+// that it writes (`write`: 1 there; small voids are solved alone, not by the
+// window), grown by one blend band and snapped, within `rect`, so that every
+// written cell keeps a band of context. A window that a large void only
+// grazes then solves the part it fills, not its whole region. Empty when
+// nothing is written.
+WindowRect focus(const WindowCells& c, const TileLayout& layout, const WindowInput& in, const WindowRect& rect,
+                 const std::vector<std::uint8_t>& write) {
+  const Range rx = layout.x.region(in.tx), ry = layout.y.region(in.ty);
+  int x0 = rx.end, y0 = ry.end, x1 = rx.begin - 1, y1 = ry.begin - 1;
+  std::size_t k = 0;
+  for (int y = ry.begin; y < ry.end; ++y)
+    for (int x = rx.begin; x < rx.end; ++x, ++k)
+      if (write[k]) {
+        x0 = std::min(x0, x), x1 = std::max(x1, x);
+        y0 = std::min(y0, y), y1 = std::max(y1, y);
+      }
+  if (x1 < x0) return WindowRect{};
+  const int bx = layout.x.band(), by = layout.y.band();
+  return WindowRect{std::max(rect.x0, snap_down(x0 - bx) - c.span.x0),
+                    std::max(rect.y0, snap_down(y0 - by) - c.span.y0),
+                    std::min(rect.x1, snap_up(x1 + bx + 1) - c.span.x0),
+                    std::min(rect.y1, snap_up(y1 + by + 1) - c.span.y0)};
+}
+
+// The output region's void cells, less those of `alone` (may be null).
+std::vector<std::uint8_t> voids_to_write(const WindowCells& c, const TileLayout& layout, const WindowInput& in,
+                                         const detail::RunsByRow* alone) {
+  const Range rx = layout.x.region(in.tx), ry = layout.y.region(in.ty);
+  std::vector<std::uint8_t> write(static_cast<std::size_t>(rx.size()) * ry.size());
+  std::size_t k = 0;
+  for (int y = ry.begin; y < ry.end; ++y)
+    for (int x = rx.begin; x < rx.end; ++x, ++k) write[k] = c.known[c.index(x - c.span.x0, y - c.span.y0)] ? 0 : 1;
+  if (alone) alone->clear(rx.begin, ry.begin, rx.size(), ry.size(), write.data());
+  return write;
+}
+
 // A bound on every cell's distance to a known cell inside `rect`, when all
 // lie within `reach` (Euclidean) by a Chebyshev test; -1 otherwise.
 double near_bound(const WindowCells& c, const WindowRect& rect, double reach) {
@@ -202,29 +248,35 @@ ReadRect window_read_rect(const TileLayout& layout, int tx, int ty, Method metho
 
 WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const CoarseGuide* guide,
                           const FillParams& params, double max_distance, const ProgressFn& progress,
-                          const std::vector<morph::LineCell>& lines) {
+                          const std::vector<morph::LineCell>& lines, const detail::RunsByRow* solved_alone) {
   const bool region = solves_region(layout, params.method);
   const bool guided = guide && guide->ready();
   if (region && !guided) throw std::logic_error("a tiled window of the default method needs the guide");
   WindowCells c = load_window(layout, in, params.method);
-  const WindowRect rect = region ? solved_rect(layout, in, c.span) : WindowRect{0, 0, c.span.w, c.span.h};
+  std::vector<std::uint8_t> write = voids_to_write(c, layout, in, solved_alone);
+  const WindowRect rect =
+      region ? focus(c, layout, in, solved_rect(layout, in, c.span), write) : WindowRect{0, 0, c.span.w, c.span.h};
 
   const double radius = guided ? guide_radius(layout, *guide) : 0.0;
   std::vector<double> dist;  // to the nearest known cell of the window
-  double farthest = -1.0;    // a bound on it over rect
-  // Scattered samples: every cell near data, so none is pinned to the guide
-  // and the transform is spared.
-  if (region && max_distance <= 0) farthest = near_bound(c, rect, std::min(radius, ThinPlateSchedule{}.shallow_reach));
-  if ((guided || max_distance > 0) && farthest < 0) dist = distance_to_valid(c.known.data(), c.span.w, c.span.h);
-  if (guided) {
-    const double unpinned = pin_to_guide(c, dist, radius, rect, *guide);
-    if (!dist.empty()) farthest = unpinned;
+  const bool idle = region && (rect.w() <= 0 || rect.h() <= 0);  // nothing to write
+  if (!idle) {
+    double farthest = -1.0;  // a bound on dist over rect
+    // Scattered samples: every cell near data, so none is pinned to the guide
+    // and the transform is spared.
+    if (region && max_distance <= 0)
+      farthest = near_bound(c, rect, std::min(radius, ThinPlateSchedule{}.shallow_reach));
+    if ((guided || max_distance > 0) && farthest < 0) dist = distance_to_valid(c.known.data(), c.span.w, c.span.h);
+    if (guided) {
+      const double unpinned = pin_to_guide(c, dist, radius, rect, *guide);
+      if (!dist.empty()) farthest = unpinned;
+    }
+    morph::place_line_cells(c.span.w, c.span.h, c.span.x0, c.span.y0, c.z.data(), c.state.data(), lines);
+    if (region)
+      fill_rect(c, rect, params, farthest, progress);
+    else
+      fill_whole(c, layout, params, progress);
   }
-  morph::place_line_cells(c.span.w, c.span.h, c.span.x0, c.span.y0, c.z.data(), c.state.data(), lines);
-  if (region)
-    fill_rect(c, rect, params, farthest, progress);
-  else
-    fill_whole(c, layout, params, progress);
 
   WindowResult r;
   r.tx = in.tx;
@@ -233,18 +285,16 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
   r.ys = layout.y.region(in.ty);
   const std::size_t cells = static_cast<std::size_t>(r.xs.size()) * r.ys.size();
   r.z.resize(cells);
-  r.write.resize(cells);
+  r.write = std::move(write);
   const bool beyond_window = guided && max_distance > exact_distance_limit(layout);
   std::size_t k = 0;
   for (int y = r.ys.begin; y < r.ys.end; ++y)
     for (int x = r.xs.begin; x < r.xs.end; ++x, ++k) {
       const std::size_t i = c.index(x - c.span.x0, y - c.span.y0);
       r.z[k] = c.z[i];
-      bool write = !c.known[i];
       // Beyond what the window sees, the guide's coarse distance decides.
-      if (write && max_distance > 0 && !within_fill_distance(dist[i], max_distance))
-        write = beyond_window && within_fill_distance(guide->coarse_distance(x, y), max_distance);
-      r.write[k] = write ? 1 : 0;
+      if (r.write[k] && max_distance > 0 && !within_fill_distance(dist[i], max_distance))
+        r.write[k] = beyond_window && within_fill_distance(guide->coarse_distance(x, y), max_distance) ? 1 : 0;
     }
   return r;
 }

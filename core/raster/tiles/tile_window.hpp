@@ -23,6 +23,7 @@
 #include "raster/coarse_guide.hpp"
 #include "raster/tiles/blend.hpp"
 #include "raster/tiles/tile_layout.hpp"
+#include "raster/void_components.hpp"
 
 namespace mcmd {
 
@@ -69,8 +70,11 @@ int exact_distance_limit(const TileLayout& layout);
 // coarse_distance (prepare_distance() must have been called).
 // Throws Cancelled (from progress), std::invalid_argument (no constraint).
 // Line cells (morphology/lines.hpp; may be empty) become ridge and river cells.
+// Cells of `solved_alone` (small voids, solved on their own; may be null) are
+// not written, and a region window solves only around the cells it writes.
 WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const CoarseGuide* guide,
                           const FillParams& params, double max_distance, const ProgressFn& progress = {},
-                          const std::vector<morph::LineCell>& lines = {});
+                          const std::vector<morph::LineCell>& lines = {},
+                          const detail::RunsByRow* solved_alone = nullptr);
 
 }  // namespace mcmd
