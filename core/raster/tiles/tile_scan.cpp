@@ -37,7 +37,7 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
   if (selecting) s.needs_filled.assign(layout.tile_count(), 0);
   std::vector<std::uint8_t> row_void(static_cast<std::size_t>(nx)), row_filled(row_void.size());
   std::vector<std::uint8_t> left_row(selecting ? static_cast<std::size_t>(W) : 0);
-  for_each_strip(raster, [&](int y0, int rows, const double* z, const std::uint8_t* valid) {
+  const auto scan = [&](int y0, int rows, const double* z, const std::uint8_t* valid) {
     if (guide) guide->add_rows(y0, rows, z, valid);
     for (int r = 0; r < rows; ++r) {
       const double* zr = z + static_cast<std::size_t>(r) * W;
@@ -76,8 +76,8 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
         for (int tx = 0; tx < nx; ++tx) filled[tx] |= row_filled[tx];
       }
     }
-    report(progress, static_cast<double>(y0 + rows) / H);
-  });
+  };
+  for_each_strip_overlapped(raster, scan, [&](int y_end) { report(progress, static_cast<double>(y_end) / H); });
   return s;
 }
 
