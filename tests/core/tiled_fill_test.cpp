@@ -231,30 +231,34 @@ TEST(TiledFill, VoidAcrossASeamIsOneSurface) {
   EXPECT_LE(seam_d1, 1.5 * inner_d1);
 }
 
-// The default method solves a window's output region and one blend band
+// The default method solves a window's output region and some context
 // around it, not the whole 2^n+1 window (each cell solved about 2.25 times at
-// T = 129, not 4): known cells beyond that change nothing. A paper method
-// still solves the whole window.
-TEST(TiledFill, DefaultMethodSolvesTheRegionAndOneBand) {
+// T = 129, not 4): known cells beyond that change nothing. The context is one
+// blend band, or 4 cells where every cell lies near data, as with these
+// scattered samples. A paper method still solves the whole window.
+TEST(TiledFill, DefaultMethodSolvesTheRegionAndSomeContext) {
   MemRaster r(257, 257);
   std::mt19937 rng(7);
   for (int y = 0; y < r.h; ++y)
     for (int x = 0; x < r.w; ++x) {
       r.z[r.at(x, y)] = terrain(3 * x, 3 * y);
-      r.valid[r.at(x, y)] = rng() % 30 == 0;  // scattered samples
+      r.valid[r.at(x, y)] = rng() % 10 == 0;  // scattered samples, every cell within 5 of one
     }
-  const TileLayout layout(r.w, r.h, 65);  // window (1, 1): cells [32, 161); region [57, 136)
-  const int outside = layout.x.region(1).begin - layout.x.band() - 1;  // 48
+  const TileLayout layout(r.w, r.h, 65);  // window (1, 1): cells [32, 161); region [57, 136); band 8
+  const int outside = layout.x.region(1).begin - 4;  // 53: the first cell solved
   MemRaster changed = r;
   for (int y = 0; y < r.h; ++y)
-    for (int x = layout.x.window_origin(1); x < outside - 1; ++x) changed.z[changed.at(x, y)] += 100.0;
-  const CoarseGuide guide = whole_guide(r);  // the same guide for both: only the window differs
+    for (int x = layout.x.window_origin(1); x < outside; ++x) changed.z[changed.at(x, y)] += 100.0;
+  MemRaster inside = r;  // one column of samples within the context
+  for (int y = 0; y < r.h; ++y) inside.z[inside.at(outside + 2, y)] += 100.0;
+  const CoarseGuide guide = whole_guide(r);  // the same guide for all: only the window differs
   for (const Method method : {Method::mcmd, Method::paper_ds}) {
     FillParams p;
     p.method = method;
     p.noise_unit = 1.0;
     const WindowResult a = solve_tile(r, layout, guide, 1, 1, p), b = solve_tile(changed, layout, guide, 1, 1, p);
     EXPECT_EQ(bit_identical(a.z, b.z), method == Method::mcmd) << "method " << static_cast<int>(method);
+    EXPECT_FALSE(bit_identical(a.z, solve_tile(inside, layout, guide, 1, 1, p).z));
   }
 }
 
