@@ -138,4 +138,19 @@ bool all_within_chebyshev(const std::uint8_t* valid, int w, int h, int r) {
   return std::all_of(near.begin(), near.end(), [](std::uint8_t v) { return v != 0; });
 }
 
+PartDistance distance_to_valid_near(const std::uint8_t* valid, int w, int h, int x0, int y0, int x1, int y1,
+                                    double reach) {
+  const int g = static_cast<int>(std::ceil(reach)) + 1;
+  PartDistance p;
+  p.x0 = std::max(0, x0 - g);
+  p.y0 = std::max(0, y0 - g);
+  p.w = std::min(w, x1 + g) - p.x0;
+  p.h = std::min(h, y1 + g) - p.y0;
+  std::vector<std::uint8_t> part(static_cast<std::size_t>(p.w) * p.h);
+  for (int y = 0; y < p.h; ++y)
+    std::copy_n(valid + static_cast<std::size_t>(p.y0 + y) * w + p.x0, p.w, part.begin() + static_cast<std::ptrdiff_t>(y) * p.w);
+  p.d = distance_to_valid(part.data(), p.w, p.h);
+  return p;
+}
+
 }  // namespace mcmd

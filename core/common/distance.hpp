@@ -21,6 +21,23 @@ inline bool within_fill_distance(double distance, double max_distance) {
 // Pre: w, h >= 1, valid holds w·h flags.
 std::vector<double> distance_to_valid(const std::uint8_t* valid, int w, int h);
 
+// distance_to_valid over a part of the raster, for callers that only ask
+// whether cells of a rectangle lie within `reach` of a valid cell: `part` is
+// the rectangle [x0, x1) × [y0, y1) grown by ceil(reach) + 1 cells, clipped.
+// At a cell of the rectangle the distance is exact when the true one is at
+// most `reach` (that valid cell lies in the part) and above `reach`
+// otherwise (the part holds no valid cell the raster lacks). A small
+// rectangle in a large raster then costs what the part costs.
+struct PartDistance {
+  int x0 = 0, y0 = 0, w = 0, h = 0;  // the part
+  std::vector<double> d;              // w·h, row-major
+  bool empty() const { return d.empty(); }
+  double at(int x, int y) const { return d[static_cast<std::size_t>(y - y0) * w + (x - x0)]; }
+};
+// Pre: the rectangle lies in the raster, reach >= 0.
+PartDistance distance_to_valid_near(const std::uint8_t* valid, int w, int h, int x0, int y0, int x1, int y1,
+                                    double reach);
+
 // Per cell of the w×h raster, 1 when a valid cell lies within r along both
 // axes at once (Chebyshev distance <= r: `valid` dilated by a (2r+1)² square),
 // by sliding ORs along columns then rows. Pre: r >= 0, valid holds w·h flags.

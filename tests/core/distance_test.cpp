@@ -58,6 +58,32 @@ TEST(Distance, VoidsInsideValidRastersMatchBruteForce) {
     }
 }
 
+// Over a rectangle's part: exact wherever the true distance is within reach,
+// above reach elsewhere, for rectangles inside, at the edge of and spanning
+// the raster (a part without the ring of reach + 1 cells fails: valid cells
+// just outside the rectangle decide cells inside it).
+TEST(Distance, PartIsExactWithinReach) {
+  std::mt19937 rng(5);
+  const int w = 61, h = 47;
+  const int rects[][4] = {{20, 15, 31, 24}, {0, 0, 10, 8}, {50, 30, 61, 47}, {0, 0, 61, 47}, {30, 20, 31, 21}};
+  for (double density : {0.002, 0.02, 0.2})
+    for (double reach : {0.0, 1.5, 4.0, 7.3})
+      for (const auto& r : rects) {
+        std::vector<std::uint8_t> valid(static_cast<std::size_t>(w) * h);
+        std::bernoulli_distribution pick(density);
+        for (auto& v : valid) v = pick(rng) ? 1 : 0;
+        const mcmd::PartDistance p = mcmd::distance_to_valid_near(valid.data(), w, h, r[0], r[1], r[2], r[3], reach);
+        for (int y = r[1]; y < r[3]; ++y)
+          for (int x = r[0]; x < r[2]; ++x) {
+            const double truth = brute_force(valid, w, h, x, y);
+            if (truth <= reach)
+              ASSERT_EQ(p.at(x, y), truth) << "reach " << reach << " at " << x << "," << y;
+            else
+              ASSERT_GT(p.at(x, y), reach) << "reach " << reach << " at " << x << "," << y;
+          }
+      }
+}
+
 // The Chebyshev dilation and bound agree with brute force: a cell is within r
 // when a valid cell lies within r along both axes; the bound is true exactly
 // when every cell is.
