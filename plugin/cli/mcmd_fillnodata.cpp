@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
   GDALAllRegister();
   mcmd::cli::CancelWatchdog watchdog([] { print_error("cancelled by the user"); });
   g_watchdog = &watchdog;
-  mcmd::cli::ErrorLog log;
+  mcmd::cli::ErrorLog log(mcmd::cli::ErrorLog::Reach::every_thread);
   try {
     const std::optional<CPLStringList> argl = mcmd::cli::apply_gdal_general_options(argc, argv);
     if (!argl) return 0;  // e.g. --formats: printed

@@ -220,6 +220,22 @@ bool copy_in_background(GDALDataset& src, const Args& args) {
   return fills_whole(src.GetRasterXSize(), src.GetRasterYSize(), args.fill.fill, gdal::tiling_of(args.fill));
 }
 
+// The copy that the tiled fill then reads and fills, from a second handle on
+// the source opened with GDAL_NUM_THREADS at the fill's thread count: GTiff
+// decodes the blocks of one request in parallel while nothing else runs yet
+// (10801×4801 LZW blobs: 2.18 -> 2.08 s). The decode threads' errors
+// reach the tool's log through its process-wide handler (ErrorLog::Reach).
+// The fill's own handle stays as it was: set for the whole run, the threads
+// slowed the windows' reads.
+DatasetPtr copy_decoded_in_parallel(GDALDriver* driver, const std::string& path, GDALDataset& src, const Args& args,
+                                    const CPLStringList& co, ErrorLog& log, const ProgressSlice& slice) {
+  const int threads = args.fill.num_threads;
+  CPLSetThreadLocalConfigOption("GDAL_NUM_THREADS", threads > 0 ? std::to_string(threads).c_str() : "ALL_CPUS");
+  DatasetPtr parallel(GDALDataset::Open(args.src.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  CPLSetThreadLocalConfigOption("GDAL_NUM_THREADS", nullptr);
+  return create_copy(driver, path, parallel ? *parallel : src, co.List(), log, slice, args.dst);
+}
+
 void run_in_place(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
   DatasetPtr src = open_raster(args.src, true, "raster");
   const std::vector<int> bands = select_bands(*src, args.bands);
@@ -259,7 +275,7 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     fill_bands(*src, &dst, bands, mask, args, ProgressSlice{progress, 0.0, 1.0});
     dst.close();  // waits for a copy that had nothing to fill, flushes
   } else if (fill_output_directly(driver, co)) {
-    DatasetPtr dst = create_copy(driver, out.path(), *src, co.List(), log, ProgressSlice{progress, 0.0, 0.1}, args.dst);
+    DatasetPtr dst = copy_decoded_in_parallel(driver, out.path(), *src, args, co, log, ProgressSlice{progress, 0.0, 0.1});
     dst = reopen_for_update(std::move(dst), out.path(), args.dst);
     // The fill reads the copy (uncompressed, unlike most sources): it must be whole.
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());

@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, on_signal);
   GDALAllRegister();
   if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(GIntBig{64} << 20);
-  mcmd::cli::ErrorLog log;
+  mcmd::cli::ErrorLog log(mcmd::cli::ErrorLog::Reach::every_thread);
   try {
     const mcmd::cli::TerrainArgs args = mcmd::cli::parse_terrain_args(argc, argv);
     if (args.help) return print(mcmd::cli::terrain_help_text());

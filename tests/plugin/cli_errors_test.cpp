@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -152,6 +153,38 @@ TEST(CliErrorsInPlace, ReadOnlyFileIsAPermissionProblem) {
                                        : run_cli({"-q", src});
   expect_clean_failure(r, "Permission denied", dir, listing, src, before);
   EXPECT_NE(r.err.find("give a dst_file"), std::string::npos) << r.err;
+}
+
+// A compressed source with one corrupt block, copied for a tiled fill: the
+// copy decodes blocks on GDAL's threads (GDAL_NUM_THREADS), whose errors
+// have no handler of the CLI's thread. Still one line, naming no internal
+// in-memory file, and nothing left behind.
+TEST(CliErrorsCorrupt, BlockDecodedOnGdalThreadsIsOneLine) {
+  TempDir dir;
+  const std::string src = dir.file("src.tif"), dst = dir.file("dst.tif");
+  RasterSpec spec;
+  spec.creation_options = {"COMPRESS=LZW", "TILED=YES", "BLOCKXSIZE=16", "BLOCKYSIZE=16"};
+  make_raster(src, spec);
+  GDALDataset* ds = GDALDataset::Open(src.c_str(), GDAL_OF_RASTER);
+  ASSERT_NE(ds, nullptr);
+  const char* offset = ds->GetRasterBand(1)->GetMetadataItem("BLOCK_OFFSET_1_1", "TIFF");
+  const char* size = ds->GetRasterBand(1)->GetMetadataItem("BLOCK_SIZE_1_1", "TIFF");
+  ASSERT_TRUE(offset && size);
+  const long at = std::stol(offset), bytes = std::stol(size);
+  GDALClose(ds);
+  {
+    std::fstream f(src, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(at);
+    for (long k = 0; k < bytes; ++k) f.put(static_cast<char>(0xFF));
+  }
+  const std::string before = file_bytes(src);
+  const auto listing = dir.listing();
+  for (const char* threads : {"1", "2"}) {
+    const RunResult r = run_cli({"-q", "-o", "TILING=ALWAYS", "-threads", threads, src, dst});
+    expect_clean_failure(r, "cannot write", dir, listing, src, before);
+    EXPECT_EQ(r.err.find("/vsimem/"), std::string::npos) << r.err;
+    EXPECT_FALSE(file_exists(dst));
+  }
 }
 
 }  // namespace
