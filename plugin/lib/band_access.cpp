@@ -79,10 +79,11 @@ void BandAccess::read(int x0, int y0, int w, int h, double* z, std::uint8_t* val
              keep);
   if (!in_place_) return;
   const std::size_t W = static_cast<std::size_t>(source_.GetXSize());
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c)
-      if (was_written((static_cast<std::size_t>(y0) + r) * W + static_cast<std::size_t>(x0) + c))
-        valid[static_cast<std::size_t>(r) * w + c] = 0;
+  for (int r = 0; r < h; ++r) {
+    std::uint8_t* row = valid + static_cast<std::size_t>(r) * w;
+    for_each_written((static_cast<std::size_t>(y0) + r) * W + static_cast<std::size_t>(x0), static_cast<std::size_t>(w),
+                     [row](std::size_t c) { row[c] = 0; });
+  }
 }
 
 void BandAccess::write(int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {

@@ -8,6 +8,8 @@
 // not written from the source.
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -53,6 +55,19 @@ class BandAccess {
   void write_over_kept(const double* z, const std::uint8_t* mask);
   void complete_rows(int y0, int rows);
   bool was_written(std::size_t cell) const { return (written_[cell >> 6] >> (cell & 63)) & 1u; }
+  // fn(k) for the written cells first + k, k < n, in order: a word of 64
+  // cells at a time (most hold no written cell).
+  template <class Fn>
+  void for_each_written(std::size_t first, std::size_t n, Fn fn) const {
+    for (std::size_t k = 0; k < n;) {
+      const std::size_t cell = first + k, bit = cell & 63;
+      const std::size_t take = std::min<std::size_t>(64 - bit, n - k);
+      std::uint64_t word = written_[cell >> 6] >> bit;
+      if (take < 64) word &= (std::uint64_t{1} << take) - 1;
+      for (; word; word &= word - 1) fn(k + static_cast<std::size_t>(std::countr_zero(word)));
+      k += take;
+    }
+  }
   void mark_written(std::size_t cell) { written_[cell >> 6] |= std::uint64_t{1} << (cell & 63); }
   bool whole(int x0, int y0, int w, int h) const {
     return x0 == 0 && y0 == 0 && w == source_.GetXSize() && h == source_.GetYSize();

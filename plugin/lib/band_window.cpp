@@ -50,6 +50,15 @@ void read_raw(GDALRasterBand& band, const Window& win, GDALDataType gdt, void* o
     }
 }
 
+// Whether every value read is an integer of the band's type (finite).
+bool holds_integers(const PixelType& type) {
+  if (type.signed_byte) return true;
+  switch (type.gdt) {
+    case GDT_Byte: case GDT_Int16: case GDT_UInt16: case GDT_Int32: case GDT_UInt32: return true;
+    default: return false;
+  }
+}
+
 // The window in the band's own type, widened here: GDAL's conversion to
 // Float64 cost three times the read itself (1201² Int16: 10 ms vs 3 ms).
 template <class T>
@@ -85,9 +94,8 @@ bool read_integer(GDALRasterBand& band, const PixelType& type, const Window& win
   std::vector<T> raw = read_native<T>(band, win, gdt, z);
   T nodata{};
   const bool masked = own_mask && integer_nodata<T>(band, type, nodata);
-  if (masked)
-    for (std::size_t i = 0; i < raw.size(); ++i)
-      if (raw[i] == nodata) valid[i] = 0;
+  if (masked)  // a select, not a branch: it vectorises (valid is all 1 here)
+    for (std::size_t i = 0; i < raw.size(); ++i) valid[i] = raw[i] != nodata;
   keep_native(std::move(raw), gdt, keep);
   return masked;
 }
@@ -182,8 +190,12 @@ std::size_t read_cells(GDALRasterBand& band, const PixelType& type, const std::v
   const bool own_mask = std::find(masks.begin(), masks.end(), band.GetMaskBand()) != masks.end();
   const bool own_nodata_done = read_values(band, type, win, own_mask, z, valid, keep);
   const bool nodata_voids = signed_nodata && type.signed_byte && type.has_nodata;
-  for (std::size_t i = 0; i < n; ++i)
-    if ((nodata_voids && z[i] == type.nodata) || !std::isfinite(z[i])) valid[i] = 0;
+  if (nodata_voids)
+    for (std::size_t i = 0; i < n; ++i)
+      if (z[i] == type.nodata) valid[i] = 0;
+  if (!holds_integers(type))  // integers are finite: the pass is spared (a tenth of a window's read)
+    for (std::size_t i = 0; i < n; ++i)
+      if (!std::isfinite(z[i])) valid[i] = 0;
   for (GDALRasterBand* mask : masks) {
     check_mask_size(*mask, band);
     if (own_nodata_done && mask == band.GetMaskBand()) continue;
