@@ -47,6 +47,30 @@ double sum_spans(const Lattice& lat, int threads, Fn fn) {
   return total;
 }
 
+// Two sums at once, each as sum_spans sums it: fn(i0, n) returns a pair.
+template <class Fn>
+std::pair<double, double> sum2_spans(const Lattice& lat, int threads, Fn fn) {
+  const std::size_t chunks = (lat.spans.size() + kSumChunkSpans - 1) / kSumChunkSpans;
+  std::vector<std::pair<double, double>> part(chunks, {0.0, 0.0});
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(chunks);
+  threads = team(lat, threads);
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+  for (std::ptrdiff_t c = 0; c < n; ++c) {
+    const std::size_t end = std::min(lat.spans.size(), (static_cast<std::size_t>(c) + 1) * kSumChunkSpans);
+    double a = 0.0, b = 0.0;
+    for (std::size_t k = static_cast<std::size_t>(c) * kSumChunkSpans; k < end; ++k) {
+      const Span& sp = lat.spans[k];
+      const auto [sa, sb] = fn(lat.index(sp.x0, sp.y), sp.x1 - sp.x0);
+      a += sa;
+      b += sb;
+    }
+    part[static_cast<std::size_t>(c)] = {a, b};
+  }
+  std::pair<double, double> total{0.0, 0.0};
+  for (const auto& [a, b] : part) total.first += a, total.second += b;
+  return total;
+}
+
 // Zero `v` over the free cells of `lat`.
 void zero_free(const Lattice& lat, std::vector<double>& v) {
   for (const Span& sp : lat.spans)
@@ -224,45 +248,58 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations, co
   work.spans = finest.spans;
   if (!finest.spring.empty()) work.spring = finest.spring;
   work.spring_all = finest.spring_all;
-  std::vector<double> zv(cells, 0.0), p(cells, 0.0), q(cells, 0.0);
+  std::vector<double> zv(cells, 0.0), p(cells, 0.0), nq(cells, 0.0);
   const auto precondition = [&](const std::vector<double>& rhs, std::vector<double>& out) {  // out = M r
     for_spans(work, threads, [&](std::size_t i0, int n) { std::fill_n(out.begin() + i0, n, 0.0); });
     std::swap(work.z, out);
     cycle(work, rhs.data(), top);
     std::swap(work.z, out);
   };
-  const auto apply = [&](std::vector<double>& v, std::vector<double>& out) {  // out = A v
+  // out = -A v: the residual of v with no right-hand side. The iteration
+  // below is written with q = -out (α, β and r as usual, the same bits):
+  // no pass to negate it.
+  const auto apply_negated = [&](std::vector<double>& v, std::vector<double>& out) {
     std::swap(work.z, v);
     residual(work, nullptr, out, threads);
     std::swap(work.z, v);
-    for_spans(work, threads, [&](std::size_t i0, int n) {
-      for (int t = 0; t < n; ++t) out[i0 + t] = -out[i0 + t];
-    });
   };
   precondition(r, zv);
   for_spans(work, threads, [&](std::size_t i0, int n) { std::copy_n(zv.begin() + i0, n, p.begin() + i0); });
   double rz = dot_free(finest, r, zv, threads);
   int it = 0;
   while (it < max_iterations) {
-    apply(p, q);
-    const double pq = dot_free(finest, p, q, threads);
+    apply_negated(p, nq);
+    const double pq = -dot_free(finest, p, nq, threads);
     if (!(pq > 0)) break;
     const double alpha = rz / pq;
-    for_spans(finest, threads, [&](std::size_t i0, int n) {
+    // z += α p, r -= α q, and |r|² in the same pass (summed as dot_free sums).
+    const double rr = sum_spans(finest, threads, [&](std::size_t i0, int n) {
+      double s = 0.0;
       for (int t = 0; t < n; ++t) {
         finest.z[i0 + t] += alpha * p[i0 + t];
-        r[i0 + t] -= alpha * q[i0 + t];
+        r[i0 + t] += alpha * nq[i0 + t];
+        s += r[i0 + t] * r[i0 + t];
       }
+      return s;
     });
     ++it;
     report(progress, static_cast<double>(it) / max_iterations);
-    if (std::sqrt(dot_free(finest, r, r, threads)) <= rel_tol * r0) break;
+    if (std::sqrt(rr) <= rel_tol * r0) break;
     precondition(r, zv);
     // Polak-Ribière β = zᵀ(r - r_old) / rz (the V-cycle is not symmetric),
-    // with r - r_old = -α q: no copy of the old residual.
-    const double num = -alpha * dot_free(finest, zv, q, threads);
+    // with r - r_old = -α q: no copy of the old residual. zᵀq and the new
+    // rz in one pass.
+    const auto [zq, rz_next] = sum2_spans(finest, threads, [&](std::size_t i0, int n) {
+      double a = 0.0, b = 0.0;
+      for (int t = 0; t < n; ++t) {
+        a += zv[i0 + t] * nq[i0 + t];
+        b += r[i0 + t] * zv[i0 + t];
+      }
+      return std::pair{a, b};
+    });
+    const double num = alpha * zq;
     const double beta = rz > 0 ? num / rz : 0.0;
-    rz = dot_free(finest, r, zv, threads);
+    rz = rz_next;
     for_spans(finest, threads, [&](std::size_t i0, int n) {
       for (int t = 0; t < n; ++t) p[i0 + t] = zv[i0 + t] + beta * p[i0 + t];
     });
