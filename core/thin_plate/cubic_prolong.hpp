@@ -46,4 +46,8 @@ inline Weights1D cubic_weights_1d(int x, int mc) {
 // cells (row-major). Pre: mw, mh >= 2, 0 <= x <= 2mw-2, 0 <= y <= 2mh-2.
 double prolong_at(const double* coarse, int mw, int mh, int x, int y);
 
+// prolong_at for the fine cells [x0, x1) of row y, into out[0 .. x1 - x0):
+// the same sums, with the row's weights found once.
+void prolong_run(const double* coarse, int mw, int mh, int y, int x0, int x1, double* out);
+
 }  // namespace mcmd

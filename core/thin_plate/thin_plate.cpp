@@ -152,10 +152,13 @@ void start_coarsest(Lattice& lat, const PullLevel& est) {
 
 // `est` is null at the finest level (its estimate is the constraints only).
 void start_from_coarser(Lattice& lat, const Lattice& coarse, const PullLevel* est, CascadeStart start) {
-  for (const Span& sp : lat.spans)
+  std::vector<double> run;
+  for (const Span& sp : lat.spans) {
+    run.resize(static_cast<std::size_t>(sp.x1 - sp.x0));
+    prolong_run(coarse.z.data(), coarse.w, coarse.h, sp.y, sp.x0, sp.x1, run.data());
     for (int x = sp.x0; x < sp.x1; ++x) {
       const std::size_t i = lat.index(x, sp.y);
-      const double p = prolong_at(coarse.z.data(), coarse.w, coarse.h, x, sp.y);
+      const double p = run[static_cast<std::size_t>(x - sp.x0)];
       const bool is_new = (x & 1) || (sp.y & 1);
       if (est && start == CascadeStart::blend && is_new) {
         const double w = est->weight[i];
@@ -164,6 +167,7 @@ void start_from_coarser(Lattice& lat, const Lattice& coarse, const PullLevel* es
         lat.z[i] = p;
       }
     }
+  }
 }
 
 // Soft estimates as springs on a coarse level's free cells, as stiff as the
