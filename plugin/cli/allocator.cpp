@@ -8,8 +8,13 @@
 // of the 4801² blob fill's CPU samples were page faults. With blocks up to
 // 32 MiB taken from the arenas and arenas trimmed only above 256 MiB free,
 // the next window reuses them: 4801² and 10801×4801 blob mosaics ~0.1 s
-// faster (system time 0.30 -> 0.20 s), peak RSS 6-20 MB higher (what one
-// window's buffers take; bench/RESULTS.md).
+// faster (system time 0.30 -> 0.20 s).
+//
+// One arena: by default each thread that allocates (the fill's workers,
+// OpenMP's, GDAL's decode threads) gets its own arena, and each kept its own
+// high-water mark: 45-75 MB more peak RSS on the mosaics and the half-void
+// tile than one arena shared by all, for no measurable time (the solver's
+// allocations are few and large).
 //
 // operator new: malloc, as the default one, but a large block is marked for
 // transparent huge pages (madvise MADV_HUGEPAGE) before anything touches it. The solver's buffers (~120 bytes per field cell) are
@@ -38,6 +43,7 @@ namespace {
 const bool kKeepsFreedMemory = [] {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  mallopt(M_ARENA_MAX, 1);
   return true;
 }();
 
