@@ -97,13 +97,15 @@ class CoarseGuide {
   double coarse_distance(long long x, long long y) const;
 
  private:
-  // Fill the lattice's unknown points (thin plate under `tension` for the default method).
-  void fill_lattice(Grid& g, const FillParams& params, double tension, const ProgressFn& progress) const;
+  // Fill the lattice's unknown points (thin plate under `tension` for the
+  // default method), the solver on `threads` threads (the same bits for any).
+  void fill_lattice(Grid& g, const FillParams& params, double tension, const ProgressFn& progress, int threads) const;
   // `start` (cw × ch, known points set) filled, under `tension`.
   std::vector<double> filled(const std::vector<double>& start, double tension, const FillParams& params,
-                             const ProgressFn& progress) const;
+                             const ProgressFn& progress, int threads) const;
   // Sets value_ to the plain fill of `mean` and returns its fill under full
-  // tension, on two threads when threads > 1.
+  // tension: side by side on two threads for a small lattice, one after the
+  // other on `threads` threads each for a large one.
   std::vector<double> plain_and_tense(const std::vector<double>& mean, const FillParams& params,
                                       const ProgressFn& progress, int threads);
   // Per lattice point: far_void_weight of its void (8-connected unknown
