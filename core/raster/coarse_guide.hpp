@@ -105,8 +105,8 @@ class CoarseGuide {
                              const ProgressFn& progress, int threads) const;
   // Sets value_ to the plain fill of `mean` and returns its fill under full
   // tension: side by side on two threads for a small lattice, one after the
-  // other on `threads` threads each for a large one.
-  std::vector<double> plain_and_tense(const std::vector<double>& mean, const FillParams& params,
+  // other on `threads` threads each for a large one (`unknown` points).
+  std::vector<double> plain_and_tense(const std::vector<double>& mean, std::size_t unknown, const FillParams& params,
                                       const ProgressFn& progress, int threads);
   // Per lattice point: far_void_weight of its void (8-connected unknown
   // points; 0 at known points), distances measured on the lattice.
