@@ -148,7 +148,8 @@ PartDistance distance_to_valid_near(const std::uint8_t* valid, int w, int h, int
   p.h = std::min(h, y1 + g) - p.y0;
   std::vector<std::uint8_t> part(static_cast<std::size_t>(p.w) * p.h);
   for (int y = 0; y < p.h; ++y)
-    std::copy_n(valid + static_cast<std::size_t>(p.y0 + y) * w + p.x0, p.w, part.begin() + static_cast<std::ptrdiff_t>(y) * p.w);
+    std::copy_n(valid + static_cast<std::size_t>(p.y0 + y) * w + p.x0, p.w,
+                part.begin() + static_cast<std::ptrdiff_t>(y) * p.w);
   p.d = distance_to_valid(part.data(), p.w, p.h);
   return p;
 }

@@ -17,14 +17,14 @@
 // allocations are few and large).
 //
 // operator new: malloc, as the default one, but a large block is marked for
-// transparent huge pages (madvise MADV_HUGEPAGE) before anything touches it. The solver's buffers (~120 bytes per field cell) are
-// then faulted in 2 MiB at a time instead of 4 KiB: on the benchmark machine
-// a 4 KiB fault costs ~2.5 µs, and a 1201² fill took ~47 000 of them (120 ms
-// of system time). Where the kernel's THP mode is "never", or the block is
+// transparent huge pages (madvise MADV_HUGEPAGE) before anything touches it.
+// The solver's buffers (~120 bytes per field cell) are then faulted in 2 MiB
+// at a time instead of 4 KiB: on the benchmark machine a 4 KiB fault costs
+// ~2.5 µs, and a 1201² fill took ~47 000 of them (120 ms of system time). Where the kernel's THP mode is "never", or the block is
 // already touched (malloc reusing freed memory), the advice changes nothing.
 // Only the executable replaces operator new: the C API library leaves its
 // host's allocator alone (and so do these malloc settings). Measurements:
-// docs/default-method.md.
+// docs/tiling.md, "The plugin's I/O".
 //
 // The whole family is replaced (plain, array, nothrow, aligned, and every
 // delete), all on malloc/aligned_alloc and free: a block taken by one form

@@ -275,7 +275,8 @@ void run_to_copy(const Args& args, ErrorLog& log, GDALProgressFunc progress) {
     fill_bands(*src, &dst, bands, mask, args, ProgressSlice{progress, 0.0, 1.0});
     dst.close();  // waits for a copy that had nothing to fill, flushes
   } else if (fill_output_directly(driver, co)) {
-    DatasetPtr dst = copy_decoded_in_parallel(driver, out.path(), *src, args, co, log, ProgressSlice{progress, 0.0, 0.1});
+    DatasetPtr dst =
+        copy_decoded_in_parallel(driver, out.path(), *src, args, co, log, ProgressSlice{progress, 0.0, 0.1});
     dst = reopen_for_update(std::move(dst), out.path(), args.dst);
     // The fill reads the copy (uncompressed, unlike most sources): it must be whole.
     if (log.failures() != 0) throw Failure(CPLE_FileIO, "cannot write '" + args.dst + "': " + log.first_failure());
