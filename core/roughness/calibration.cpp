@@ -106,14 +106,20 @@ void scale_noise(const Area& a, const Blocks& blocks, const std::vector<double>&
         const double fy = (y + blocks.oy + 0.5) / kBlock - 0.5;
         const int cj = static_cast<int>(floor_of(fy));
         const double ty = fy - cj;
-        for (int x = r.x0; x < r.x1; ++x) {
-          double& v = noise[a.index(x, y)];
-          if (v == 0.0) continue;
-          const double fx = (x + blocks.ox + 0.5) / kBlock - 0.5;
-          const int ci = static_cast<int>(floor_of(fx));
-          const double tx = fx - ci;
-          v *= (1 - ty) * ((1 - tx) * at(ci, cj) + tx * at(ci + 1, cj)) +
-               ty * ((1 - tx) * at(ci, cj + 1) + tx * at(ci + 1, cj + 1));
+        double* row = noise.data() + a.index(a.x0, y);  // row[x - a.x0]: cell x
+        // The row in runs of one pair of block centres (ci, ci + 1): the
+        // left and the right half of the block.
+        for (int x0 = r.x0; x0 < r.x1;) {
+          const int ci = static_cast<int>(floor_of((x0 + blocks.ox + 0.5) / kBlock - 0.5));
+          const int x1 = std::min(r.x1, (ci + 1) * kBlock + kBlock / 2 - blocks.ox);  // the next centre
+          const double s00 = at(ci, cj), s10 = at(ci + 1, cj), s01 = at(ci, cj + 1), s11 = at(ci + 1, cj + 1);
+          for (int x = x0; x < x1; ++x) {
+            const double tx = (x + blocks.ox + 0.5) / kBlock - 0.5 - ci;
+            const double f = (1 - ty) * ((1 - tx) * s00 + tx * s10) + ty * ((1 - tx) * s01 + tx * s11);
+            double& v = row[x - a.x0];
+            v = v == 0.0 ? v : v * f;  // 0 where there is no noise (even if f is not finite)
+          }
+          x0 = x1;
         }
       }
     }

@@ -40,6 +40,12 @@ class UniformHash {
     return mix(mix(key_ ^ static_cast<std::uint64_t>(gx)) ^ static_cast<std::uint64_t>(gy));
   }
   double operator()(std::int64_t gx, std::int64_t gy) const { return 2.0 * noise_detail::unit(bits(gx, gy)) - 1.0; }
+  // The same value in two steps, the first shared by a column of cells:
+  // at(column(gx), gy) == (*this)(gx, gy) at half the mixing per cell.
+  std::uint64_t column(std::int64_t gx) const { return noise_detail::mix(key_ ^ static_cast<std::uint64_t>(gx)); }
+  static double at(std::uint64_t column, std::int64_t gy) {
+    return 2.0 * noise_detail::unit(noise_detail::mix(column ^ static_cast<std::uint64_t>(gy))) - 1.0;
+  }
 
  private:
   std::uint64_t key_;
