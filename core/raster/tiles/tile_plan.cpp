@@ -136,7 +136,8 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
   start_plan(raster.width, raster.height, params.method, tiling, stats, plan);
   std::optional<ComponentFinder> finder = component_finder(plan, params, tiling);
   ScanResult scan = scan_raster(raster, plan.layout, plan.single ? nullptr : &plan.guide,
-                                sub_progress(progress, 0.0, 2.0 / 3), finder ? &*finder : nullptr, &left);
+                                sub_progress(progress, 0.0, 2.0 / 3), finder ? &*finder : nullptr, &left,
+                                effective_threads(tiling.threads));
   return finish_plan(raster, params, tiling, sub_progress(progress, 2.0 / 3, 1.0), stats, plan, left, scan, finder);
 }
 

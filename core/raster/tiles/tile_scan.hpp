@@ -27,9 +27,10 @@ struct ScanResult {
 
 // Read the raster in full-width row blocks of about a million cells, count
 // known and void cells, feed `guide` and `components` (either may be null),
-// mark the tiles to solve.
+// mark the tiles to solve. With threads > 1 the guide is fed on a thread of
+// its own.
 ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, CoarseGuide* guide,
                        const ProgressFn& progress, ComponentFinder* components = nullptr,
-                       const LeftVoids* left = nullptr);
+                       const LeftVoids* left = nullptr, int threads = 1);
 
 }  // namespace mcmd::detail
