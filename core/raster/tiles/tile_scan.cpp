@@ -73,7 +73,7 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
   const auto scan = [&](int y0, int rows, const double* z, const std::uint8_t* valid) {
     // The guide's sums beside the rows below (they share nothing but the
     // strip): with add_known_range, the 10801×4801 blob mosaic's first pass
-    // went from 0.33 to 0.16 s.
+    // takes 0.16 s instead of 0.33.
     std::future<void> summing;
     if (guide && threads > 1)
       summing = std::async(std::launch::async, [&] { guide->add_rows(y0, rows, z, valid); });
