@@ -40,7 +40,7 @@ template <class T, class NodeRow>
 // each loaded whole, then transposed (shuffles in place of 16 loads of one
 // node each).
 [[gnu::always_inline]] inline void transposed(const double* const p[4], Quad n[4]) {
-  using Unaligned = double __attribute__((vector_size(32), aligned(8)));
+  using Unaligned = double __attribute__((vector_size(32), aligned(8), may_alias));
   Quad row[4];
   for (int l = 0; l < 4; ++l) row[l] = *reinterpret_cast<const Unaligned*>(p[l]);
   using Mask = long long __attribute__((vector_size(32)));
