@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <future>
 #include <limits>
 
+#include "common/zero_runs.hpp"
 #include "raster/strips.hpp"
 
 namespace mcmd::detail {
@@ -90,20 +90,16 @@ ScanResult scan_raster(const RasterAccess& raster, const TileLayout& layout, Coa
       }
       const std::size_t known = add_known_range(zr, vr, W, s.lo, s.hi);
       if (known != static_cast<std::size_t>(W))
-        for (int x = 0; x < W; ++x) {
-          for (std::uint64_t word; x + 8 <= W; x += 8) {  // past 8 known cells at a time
-            std::memcpy(&word, vr + x, sizeof word);
-            if (word != 0x0101010101010101ull) break;
+        for_each_zero_run(vr, W, [&](int x0, int x1) {
+          for (int x = x0; x < x1; ++x) {
+            row_void[cx[x][0]] = 1;
+            if (cx[x][1] >= 0) row_void[cx[x][1]] = 1;
+            if (selecting && !left_row[x]) {
+              row_filled[cx[x][0]] = 1;
+              if (cx[x][1] >= 0) row_filled[cx[x][1]] = 1;
+            }
           }
-          if (x == W) break;
-          if (vr[x]) continue;
-          row_void[cx[x][0]] = 1;
-          if (cx[x][1] >= 0) row_void[cx[x][1]] = 1;
-          if (selecting && !left_row[x]) {
-            row_filled[cx[x][0]] = 1;
-            if (cx[x][1] >= 0) row_filled[cx[x][1]] = 1;
-          }
-        }
+        });
       if (components) components->add_row(y0 + r, vr);
       s.known += known;
       s.voids += static_cast<std::size_t>(W) - known;
