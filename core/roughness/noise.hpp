@@ -36,10 +36,9 @@ class UniformHash {
   explicit UniformHash(std::uint64_t seed, std::uint64_t stream = 1) : key_(noise_detail::stream_seed(seed, stream)) {}
   // 64 hashed bits of a cell.
   std::uint64_t bits(std::int64_t gx, std::int64_t gy) const {
-    using noise_detail::mix;
-    return mix(mix(key_ ^ static_cast<std::uint64_t>(gx)) ^ static_cast<std::uint64_t>(gy));
+    return noise_detail::mix(column(gx) ^ static_cast<std::uint64_t>(gy));
   }
-  double operator()(std::int64_t gx, std::int64_t gy) const { return 2.0 * noise_detail::unit(bits(gx, gy)) - 1.0; }
+  double operator()(std::int64_t gx, std::int64_t gy) const { return at(column(gx), gy); }
   // The same value in two steps, the first shared by a column of cells:
   // at(column(gx), gy) == (*this)(gx, gy) at half the mixing per cell.
   std::uint64_t column(std::int64_t gx) const { return noise_detail::mix(key_ ^ static_cast<std::uint64_t>(gx)); }

@@ -277,7 +277,7 @@ void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const s
       const Rect& r = blocks.noise_box[blocks.index(bi, bj)];
       const OctaveCells cells{g.x0 + r.x0, g.x0 + r.x1, g.y0 + r.y0, g.y0 + r.y1, mask.data() + a.index(r.x0, r.y0),
                               out.data() + a.index(r.x0, r.y0), a.w};
-      samples.reset(cells);
+      if (octaves > kSampledFrom) samples.reset(cells);  // only sampled octaves use them
       for (int j = 0; j < octaves; ++j) add_octave(seed, j, std::exp2(j * H), cells, samples, node, column, scratch);
       if (octaves > kSampledFrom) add_interpolated(cells, samples, scratch);
     }
