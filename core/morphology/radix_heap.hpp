@@ -22,7 +22,9 @@ class RadixHeap {
   // Pre: level >= the level of the last pop; not NaN.
   void push(double level, std::int32_t cell) {
     const std::uint64_t k = key(level);
-    bucket_[bucket_of(k)].push_back({k, cell});
+    const int b = bucket_of(k);
+    bucket_[b].push_back({k, cell});
+    if (b > 0) filled_ |= std::uint64_t{1} << (b - 1);
     ++size_;
   }
 
@@ -59,18 +61,23 @@ class RadixHeap {
   // Moves the smallest keys' bucket down: its minimum becomes last_, and
   // its items go to the buckets relative to it (in their order).
   void refill() {
-    int i = 1;
-    while (bucket_[i].empty()) ++i;
+    const int i = std::countr_zero(filled_) + 1;
     std::uint64_t lo = bucket_[i][0].key;
     for (const Item& it : bucket_[i]) lo = std::min(lo, it.key);
     last_ = lo;
     moving_.swap(bucket_[i]);  // the emptied bucket keeps the scratch's capacity
-    for (const Item& it : moving_) bucket_[bucket_of(it.key)].push_back(it);
+    filled_ &= ~(std::uint64_t{1} << (i - 1));  // its items all go lower
+    for (const Item& it : moving_) {
+      const int b = bucket_of(it.key);
+      bucket_[b].push_back(it);
+      if (b > 0) filled_ |= std::uint64_t{1} << (b - 1);
+    }
     moving_.clear();
   }
 
   std::array<std::vector<Item>, 65> bucket_;
   std::vector<Item> moving_;  // refill's scratch, reused: no allocation per refill
+  std::uint64_t filled_ = 0;  // bit i - 1: bucket i (>= 1) holds items
   std::uint64_t last_ = 0;
   std::size_t next_ = 0;  // read position in bucket_[0]
   std::size_t size_ = 0;

@@ -1,5 +1,6 @@
 // Morphology: the flow routines, channels through voids (-morph auto) and
 // ridge/river lines, on small synthetic terrains whose drainage is known.
+#include <random>
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -113,6 +114,29 @@ TEST(RadixHeap, PopsInOrderAndEqualLevelsInTheOrderPushed) {
   const auto last = heap.pop();
   EXPECT_EQ(last.first, 1e10);
   EXPECT_TRUE(heap.empty());
+}
+
+// A flood's use: pushes at or above the last pop, many levels apart and
+// many equal, interleaved with pops; against a stable sort of what went in.
+TEST(RadixHeap, AgreesWithAStableOrderOverManyBuckets) {
+  morph::RadixHeap heap;
+  std::mt19937_64 rng(7);
+  std::vector<std::pair<double, std::int32_t>> pending;  // pushed, not yet popped
+  double last = -1e6;
+  std::int32_t next_cell = 0;
+  for (int round = 0; round < 20000; ++round) {
+    for (int k = static_cast<int>(rng() % 3); k > 0; --k) {
+      const double step = rng() % 3 == 0 ? 0.0 : std::ldexp(static_cast<double>(rng() % 1000), static_cast<int>(rng() % 40) - 20);
+      heap.push(last + step, next_cell);
+      pending.emplace_back(last + step, next_cell++);
+    }
+    if (pending.empty()) continue;
+    std::stable_sort(pending.begin(), pending.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    const auto got = heap.pop();
+    ASSERT_EQ(got, pending.front()) << "round " << round;
+    pending.erase(pending.begin());
+    last = got.first;
+  }
 }
 
 double v_valley(int x, int y) { return 1000.0 - 2.0 * y + 3.0 * std::abs(x - valley_axis(y)); }
