@@ -1,9 +1,9 @@
 // Morphology: the flow routines, channels through voids (-morph auto) and
 // ridge/river lines, on small synthetic terrains whose drainage is known.
-#include <random>
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <random>
 #include <vector>
 
 #include "mcmd/fill_raster.hpp"
@@ -126,7 +126,8 @@ TEST(RadixHeap, AgreesWithAStableOrderOverManyBuckets) {
   std::int32_t next_cell = 0;
   for (int round = 0; round < 20000; ++round) {
     for (int k = static_cast<int>(rng() % 3); k > 0; --k) {
-      const double step = rng() % 3 == 0 ? 0.0 : std::ldexp(static_cast<double>(rng() % 1000), static_cast<int>(rng() % 40) - 20);
+      const int exponent = static_cast<int>(rng() % 40) - 20;
+      const double step = rng() % 3 == 0 ? 0.0 : std::ldexp(static_cast<double>(rng() % 1000), exponent);
       heap.push(last + step, next_cell);
       pending.emplace_back(last + step, next_cell++);
     }
