@@ -21,10 +21,7 @@ class RadixHeap {
 
   // Pre: level >= the level of the last pop; not NaN.
   void push(double level, std::int32_t cell) {
-    const std::uint64_t k = key(level);
-    const int b = bucket_of(k);
-    bucket_[b].push_back({k, cell});
-    if (b > 0) filled_ |= std::uint64_t{1} << (b - 1);
+    put({key(level), cell});
     ++size_;
   }
 
@@ -58,6 +55,13 @@ class RadixHeap {
   // Bucket i >= 1 holds keys whose highest bit differing from last_ is bit i - 1.
   int bucket_of(std::uint64_t k) const { return k == last_ ? 0 : 64 - std::countl_zero(k ^ last_); }
 
+  // Into the bucket of its key relative to last_, marked filled.
+  void put(const Item& it) {
+    const int b = bucket_of(it.key);
+    bucket_[b].push_back(it);
+    if (b > 0) filled_ |= std::uint64_t{1} << (b - 1);
+  }
+
   // Moves the smallest keys' bucket down: its minimum becomes last_, and
   // its items go to the buckets relative to it (in their order).
   void refill() {
@@ -67,11 +71,7 @@ class RadixHeap {
     last_ = lo;
     moving_.swap(bucket_[i]);  // the emptied bucket keeps the scratch's capacity
     filled_ &= ~(std::uint64_t{1} << (i - 1));  // its items all go lower
-    for (const Item& it : moving_) {
-      const int b = bucket_of(it.key);
-      bucket_[b].push_back(it);
-      if (b > 0) filled_ |= std::uint64_t{1} << (b - 1);
-    }
+    for (const Item& it : moving_) put(it);
     moving_.clear();
   }
 
