@@ -26,6 +26,14 @@ std::vector<std::size_t> job_order(std::size_t n, const RasterFillHooks& hooks) 
   return order;
 }
 
+// Jobs read ahead of the next one to blend, per worker. Results are blended
+// in job order, so with fewer one slow window (a large void) leaves the other
+// workers idle once they have solved the jobs after it: with threads + 1 in
+// flight, the 4801² blob mosaic's workers were busy 79 % and 68 % of the
+// jobs' time; with 4 per thread, 86 % and 84 %. Each holds at most a window's
+// input and result (~6 MB at T = 513).
+constexpr std::size_t kJobsInFlightPerThread = 4;
+
 struct PublishOnExit {
   const RasterFillHooks& hooks;
   const RasterFillStats& stats;
@@ -49,7 +57,8 @@ void tiled_fill(const RasterAccess& raster, const FillParams& params, const Tili
   const std::vector<std::size_t> order = job_order(plan.jobs.size(), hooks);
   const int threads = effective_threads(tiling.threads);
   // With a reordered run every job may be in flight: results are combined in job order.
-  const std::size_t in_flight = hooks.reorder ? plan.jobs.size() : static_cast<std::size_t>(threads) + 1;
+  const std::size_t in_flight =
+      hooks.reorder ? plan.jobs.size() : static_cast<std::size_t>(threads) * kJobsInFlightPerThread;
   run_tile_jobs(raster, plan, order, in_flight, threads, tiling.max_distance, sub_progress(progress, 0.15, 1.0),
                 stats);
 }
