@@ -86,6 +86,10 @@ std::vector<morph::FieldLineCell> line_cells_in(const RasterMorphology& m, const
 
 }  // namespace
 
+double field_pin_radius(int guide_stride) {
+  return kGuideRadiusStrides * std::max(kMinGuideStride, guide_stride);
+}
+
 VoidFieldResult solve_void_field(const Box& rect, const std::vector<VoidRun>& runs, std::vector<double> z,
                                  const std::uint8_t* valid, const DeepPins& pins, const FillParams& params,
                                  double max_distance, const ProgressFn& progress, int threads,

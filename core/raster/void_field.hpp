@@ -35,6 +35,13 @@ int longest_void_run(const std::uint8_t* valid, int w, int h);
 // least this many and at least as many as the component's own cells.
 constexpr std::size_t kPinOthersMin = 64;
 
+// A field's unknown cells farther than field_pin_radius(S) from data are
+// pinned to a coarse guide of stride S: kGuideRadiusStrides · S, S at least
+// kMinGuideStride (a raster filled whole builds its guide at that stride at
+// least; the tiles' when larger).
+constexpr int kMinGuideStride = 4;
+double field_pin_radius(int guide_stride);
+
 // Unknown cells farther than `radius` from data, and other voids' cells (see
 // kPinOthersMin), are pinned to the guide that `guide()` returns, called only
 // by a field that has such cells (it may build the guide then; empty function

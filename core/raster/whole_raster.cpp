@@ -37,10 +37,11 @@ struct Whole {
 // How many times the raster's cells the voids' fields may hold together and
 // still be drained each on its own. A field's Priority-Flood stays in cache
 // where the raster's waits on memory, and fields are drained in parallel:
-// 1.6-2.0 times the raster (blob voids of the hydrology benchmark), the
+// at 1.6-2.0 times the raster (blob voids of the hydrology benchmark) the
 // whole fill was faster (White Mountains 0.60 -> 0.51 s on two threads,
-// 0.84 -> 0.67 s on one); 2.9-3.2 times, slower (Zion 0.19 -> 0.21 s). Not a function of the thread count: the two find
-// slightly different inflows, and the output must not depend on it.
+// 0.84 -> 0.67 s on one), at 2.9-3.2 times slower (Zion 0.19 -> 0.21 s).
+// Not a function of the thread count: the two find slightly different
+// inflows, and the output must not depend on it.
 constexpr std::size_t kFieldDrainageLimit = 2;
 
 // A void component and the part of the raster it is solved in.
@@ -78,7 +79,7 @@ class DeepGuide {
  public:
   DeepGuide(const Whole& r, const FillParams& params, int threads)
       : r_(r), params_(params), threads_(threads), stride_(std::max(kMinGuideStride, guide_stride(r.w, r.h))) {}
-  double radius() const { return kGuideRadiusStrides * stride_; }
+  double radius() const { return field_pin_radius(stride_); }
   int stride_if_built() const { return guide_.ready() ? stride_ : 0; }
   bool busy() const { return state_.load() == State::building; }
   // With `may_defer`, throws GuideBusy instead of waiting for another
@@ -368,7 +369,7 @@ void fill_whole_raster(const RasterAccess& raster, const FillParams& params, con
     st.tile_side = tiled.tile_side, st.tiles_x = tiled.tiles_x, st.tiles_y = tiled.tiles_y;
     st.windows_solved = tiled.windows_solved, st.small_components = tiled.small_components;
     st.guide_stride = tiled.guide_stride;
-    st.channels_skipped = tiled.channels_skipped;
+    st.channels_skipped = params.morph.channels;  // the far voids get none
   }
   if (hooks.stats) *hooks.stats = st;
   report(progress, 1.0);

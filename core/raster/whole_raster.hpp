@@ -19,10 +19,6 @@ namespace mcmd::detail {
 // the peak of the tiled fill on large rasters.
 constexpr std::size_t kWholeRasterMaxCells = std::size_t{1} << 21;
 
-// Unknown cells farther than kGuideRadiusStrides · stride from data are pinned
-// to a coarse guide of this stride at least (the tiles' stride when larger).
-constexpr int kMinGuideStride = 4;
-
 // Fills `raster` whole: one read, one solve per void component, one write of
 // the void cells (within max_distance of a known cell when that is > 0,
 // measured exactly). A void with a cell so far from data that the coarse

@@ -100,7 +100,8 @@ Morphology (valleys and ridges through the voids; docs/morphology.md):
                    hydrology (streams, watersheds, flood models). Default
                    none. -o MORPH_CHANNEL=N: cells that must drain into a void
                    to make a channel through it (default 0.1 % of the known
-                   cells, at most 2000).
+                   cells, at most 2000). Above 2^21 cells (filled through
+                   tiles) only voids up to 128 cells across get channels.
   -rivers file     River lines: vector lines in any OGR format (reprojected to
                    the raster's CRS) or a raster mask on the raster's grid
                    (nonzero = river). Where a line crosses a void its cells

@@ -125,10 +125,9 @@ void fill_band_access(BandAccess& band, const FillRequest& request, const Option
     throw;
   }
   if (stats.channels_skipped)
-    warn(std::string("-morph auto routed no channel through ") +
-         (stats.tile_side > 0 && stats.known_cells + stats.void_cells > (std::size_t{1} << 21)
-              ? "this raster: it is filled through tiles (more than 2^21 cells, a paper method or TILING=ALWAYS)"
-              : "the voids that reach far from data (they are filled through tiles)"));
+    warn(
+        "-morph auto routed no channel through the voids filled through tiles: voids too large to solve alone or "
+        "reaching far from data, and every void of a tiled raster with a paper method or -md");
   // Nothing was written when no cell is void.
   if (request.require_void_marker && !marked && stats.void_cells == 0) fail_unmarked(request);
   band.complete();

@@ -1,6 +1,7 @@
 // Morphology: the flow routines, channels through voids (-morph auto) and
 // ridge/river lines, on small synthetic terrains whose drainage is known.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <random>
@@ -12,6 +13,7 @@
 #include "morphology/flow.hpp"
 #include "morphology/lines.hpp"
 #include "morphology/radix_heap.hpp"
+#include "raster/void_field.hpp"
 
 namespace {
 
@@ -247,6 +249,100 @@ TEST(MorphAuto, TheDefaultFillDamsTheSameValley) {  // what the test above guard
   int new_ponds = 0;
   for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
   EXPECT_GT(new_ponds, 100);
+}
+
+// The gorge with a disc void across its floor and `small` 3×3 voids on a
+// grid over the plateau and walls, and the cells the voids' fields hold
+// together.
+struct GorgeWithVoids {
+  MemoryRaster raster;
+  std::size_t field_cells = 0;
+};
+GorgeWithVoids gorge_with_voids(int small) {
+  const double cx = valley_axis(80), cy = 80, r = 12;
+  GorgeWithVoids g{with_disc_void(121, 161, valley, cx, cy, r), 0};
+  MemoryRaster& m = g.raster;
+  const detail::Box disc{static_cast<int>(std::ceil(cx - r)), static_cast<int>(cy - r),
+                         static_cast<int>(std::floor(cx + r)), static_cast<int>(cy + r)};
+  const detail::Box field = detail::void_field_rect(disc, m.w, m.h);
+  g.field_cells += static_cast<std::size_t>(field.width()) * field.height();
+  for (int k = 0; k < small; ++k) {  // rows clear of the disc's
+    const int x0 = 6 + (k % 8) * 14, y0 = std::array<int, 5>{6, 30, 110, 130, 150}[k / 8];
+    for (int y = y0; y < y0 + 3; ++y)
+      for (int x = x0; x < x0 + 3; ++x) m.valid[static_cast<std::size_t>(y) * m.w + x] = 0;
+    const detail::Box f = detail::void_field_rect(detail::Box{x0, y0, x0 + 2, y0 + 2}, m.w, m.h);
+    g.field_cells += static_cast<std::size_t>(f.width()) * f.height();
+  }
+  return g;
+}
+
+// The drainage into the voids is computed in each field, or once for the
+// whole raster when the fields overlap much (many small voids): either way
+// the gorge drains through its void, and the fields solved on any number of
+// threads give the same bits.
+TEST(MorphAuto, EachFieldsOrTheRastersDrainageKeepsTheGorgeAndTheBits) {
+  for (const int small : {4, 40}) {
+    const GorgeWithVoids g = gorge_with_voids(small);
+    const std::size_t cells = static_cast<std::size_t>(g.raster.w) * g.raster.h;
+    // 4 voids: each field drained; 40: their fields overlap, the raster's.
+    EXPECT_EQ(g.field_cells > 2 * cells, small == 40) << g.field_cells << " field cells";
+    std::vector<double> first;
+    for (const int threads : {1, 2, 4}) {
+      MemoryRaster m = g.raster;
+      FillParams p;
+      p.morph.channels = true;
+      TilingParams t;
+      t.threads = threads;
+      fill_raster(m.access(), p, t);
+      if (first.empty()) {
+        first = m.z;
+        const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(121, 161, valley, -100, -100, 1));
+        int new_ponds = 0;
+        for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
+        EXPECT_EQ(new_ponds, 0) << small << " small voids";
+      } else {
+        EXPECT_TRUE(m.z == first) << small << " small voids, " << threads << " threads";
+      }
+    }
+  }
+}
+
+// Filled through tiles (a large raster, or TILING=ALWAYS), a void small
+// enough to be solved alone is solved in its void field, channels included:
+// the gorge drains through it, the same bits for any thread count or job
+// order, and no warning that channels were skipped.
+TEST(MorphAuto, ATiledRasterRoutesTheGorgeThroughAVoidSolvedAlone) {
+  const MemoryRaster source = with_disc_void(121, 161, valley, valley_axis(80), 80, 18);
+  std::vector<double> first;
+  for (const int threads : {1, 2}) {
+    for (const bool reversed : {false, true}) {
+      MemoryRaster m = source;
+      FillParams p;
+      p.morph.channels = true;
+      TilingParams t;
+      t.always_tile = true;
+      t.tile_side = 129;
+      t.threads = threads;
+      RasterFillStats stats;
+      RasterFillHooks hooks;
+      hooks.stats = &stats;
+      if (reversed) hooks.reorder = [](std::vector<std::size_t>& o) { std::reverse(o.begin(), o.end()); };
+      fill_raster(m.access(), p, t, {}, hooks);
+      EXPECT_GT(stats.tile_side, 0);
+      EXPECT_EQ(stats.small_components, 1u);
+      EXPECT_EQ(stats.windows_solved, 0u);
+      EXPECT_FALSE(stats.channels_skipped);
+      if (!first.empty()) {
+        EXPECT_TRUE(m.z == first) << threads << " threads" << (reversed ? ", reversed" : "");
+        continue;
+      }
+      first = m.z;
+      const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(121, 161, valley, -100, -100, 1));
+      int new_ponds = 0;
+      for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
+      EXPECT_EQ(new_ponds, 0);  // the default dams it: TheDefaultFillDamsTheSameValley
+    }
+  }
 }
 
 // A long narrow void across a plane that falls south and, gently, east:

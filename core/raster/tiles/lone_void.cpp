@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <stdexcept>
 
 #include "common/distance.hpp"
 #include "common/padding.hpp"
@@ -110,6 +111,19 @@ std::vector<double> solve_component(const SmallComponent& c, const ComponentGrid
   for (const VoidRun& r : c.runs)
     for (int x = r.x0; x < r.x1; ++x) out.push_back(grid.z(x - g.ox, r.y - g.oy));
   return out;
+}
+
+std::vector<double> solve_component_in_field(const SmallComponent& c, const Box& field, std::vector<double> z,
+                                             const std::uint8_t* valid, const CoarseGuide& guide,
+                                             const FillParams& params, const ProgressFn& progress,
+                                             const std::vector<morph::LineCell>& lines) {
+  const DeepPins pins{[&guide] { return &guide; }, field_pin_radius(guide.stride())};
+  const RasterMorphology morphology{nullptr, 0, lines.empty() ? nullptr : &lines};
+  VoidFieldResult r = solve_void_field(field, c.runs, std::move(z), valid, pins, params, 0.0, progress, 1, morphology);
+  // A component solved alone is at most kMaxSmallExtent across: no cell
+  // lies as far from data as reaches_far asks.
+  if (r.values.empty()) throw std::logic_error("a small void component reached far from data");
+  return std::move(r.values);
 }
 
 }  // namespace mcmd::detail

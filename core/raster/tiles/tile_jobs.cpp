@@ -61,7 +61,10 @@ struct CancelOnExit {
 
 std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan& plan, const Job& job) {
   auto in = std::make_shared<JobInput>();
-  if (job.component) {
+  if (job.component && plan.params.morph.channels) {
+    in->field = void_field_rect(plan.small[job.index].box, raster.width, raster.height);
+    in->window.rect = ReadRect{in->field.x0, in->field.y0, in->field.width(), in->field.height()};
+  } else if (job.component) {
     in->grid = component_grid(plan.small[job.index].box, raster.width, raster.height);
     in->window.rect = in->grid.rect;
   } else {
@@ -81,7 +84,10 @@ std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan&
 JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job& job, const JobInput& in,
                     double max_distance, const ProgressFn& progress) {
   JobResult r;
-  if (job.component) {
+  if (job.component && plan.params.morph.channels) {
+    r.values = solve_component_in_field(plan.small[job.index], in.field, in.window.z, in.window.valid.data(),
+                                        plan.guide, plan.params, progress, plan.lines);
+  } else if (job.component) {
     r.values = solve_component(plan.small[job.index], in.grid, raster.width, raster.height, in.window.z.data(),
                                in.window.valid.data(), plan.guide, plan.radius, plan.params, progress, plan.lines);
   } else {

@@ -16,10 +16,12 @@
 
 namespace mcmd::detail {
 
-// A job's input: the rectangle it reads and its cells (a component's grid too).
+// A job's input: the rectangle it reads and its cells (a component's grid,
+// or with -morph auto its void field, too).
 struct JobInput {
   WindowInput window;
   ComponentGrid grid;  // a component's
+  Box field;           // a component's void field, with -morph auto (window.rect)
 };
 
 struct JobResult {

@@ -63,10 +63,11 @@ std::optional<ComponentFinder> component_finder(const TilePlan& plan, const Fill
   return finder;
 }
 
-// After pass 1: the guide's solve, the small components and the jobs.
+// After pass 1: the guide's solve, the small components and the jobs
+// (`route_in_fields`: with -morph auto, the components' channels).
 bool finish_plan(const RasterAccess& raster, const FillParams& params, const TilingParams& tiling,
                  const ProgressFn& progress, RasterFillStats& stats, TilePlan& plan, const LeftVoids& left,
-                 ScanResult& scan, std::optional<ComponentFinder>& finder) {
+                 ScanResult& scan, std::optional<ComponentFinder>& finder, bool route_in_fields) {
   const TileLayout& layout = plan.layout;
   if (finder) {
     finder->finish();
@@ -81,9 +82,7 @@ bool finish_plan(const RasterAccess& raster, const FillParams& params, const Til
   if (!raster.lines.empty()) plan.lines = morph::line_cells(raster);
   // One noise unit for every window, so displacement amplitudes agree across seams.
   plan.params = params;
-  // Channels are routed in the fields of rasters filled whole (whole_raster.hpp).
-  stats.channels_skipped = params.morph.channels;
-  plan.params.morph.channels = false;
+  plan.params.morph.channels = false;  // until small components are known (below)
   if (plan.params.noise_unit <= 0) plan.params.noise_unit = scan.hi - scan.lo;
   if (!plan.single) {
     plan.guide.solve(plan.params, progress, effective_threads(tiling.threads));
@@ -104,6 +103,13 @@ bool finish_plan(const RasterAccess& raster, const FillParams& params, const Til
     if (scan.needs[t]) plan.jobs.push_back(Job{false, t});
   stats.windows_solved = plan.jobs.size() - plan.small.size();
   stats.small_components = plan.small.size();
+  // -morph auto: channels are routed through the small components, each
+  // solved in its void field as in a raster filled whole (void_field.hpp);
+  // the windows (larger voids) fill without them.
+  plan.params.morph.channels = params.morph.channels && route_in_fields && !plan.small.empty();
+  if (plan.params.morph.channels && plan.params.morph.min_inflow <= 0)
+    plan.params.morph.min_inflow = default_channel_cells(scan.known);
+  stats.channels_skipped = params.morph.channels && (!plan.params.morph.channels || stats.windows_solved > 0);
   plan.radius = guided ? guide_radius(layout, plan.guide) : 0.0;
   return true;
 }
@@ -138,7 +144,8 @@ bool plan_tiles(const RasterAccess& raster, const FillParams& params, const Tili
   ScanResult scan = scan_raster(raster, plan.layout, plan.single ? nullptr : &plan.guide,
                                 sub_progress(progress, 0.0, 2.0 / 3), finder ? &*finder : nullptr, &left,
                                 effective_threads(tiling.threads));
-  return finish_plan(raster, params, tiling, sub_progress(progress, 2.0 / 3, 1.0), stats, plan, left, scan, finder);
+  return finish_plan(raster, params, tiling, sub_progress(progress, 2.0 / 3, 1.0), stats, plan, left, scan, finder,
+                     true);
 }
 
 bool plan_from_parts(const PlanParts& parts, const FillParams& params, const TilingParams& tiling,
@@ -151,7 +158,8 @@ bool plan_from_parts(const PlanParts& parts, const FillParams& params, const Til
   ScanResult scan = scan_raster(pattern, plan.layout, nullptr, {}, finder ? &*finder : nullptr, &left);
   scan.lo = parts.lo;
   scan.hi = parts.hi;
-  return finish_plan(pattern, params, tiling, {}, stats, plan, left, scan, finder);
+  // A chunk's halo holds a component's grid, not its void field: no channels.
+  return finish_plan(pattern, params, tiling, {}, stats, plan, left, scan, finder, false);
 }
 
 }  // namespace mcmd::detail
