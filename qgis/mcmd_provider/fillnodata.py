@@ -5,6 +5,7 @@ import os
 
 from qgis.core import (Qgis,
                        QgsMessageLog,
+                       QgsProcessing,
                        QgsProcessingException,
                        QgsProcessingParameterBand,
                        QgsProcessingParameterBoolean,
@@ -14,10 +15,11 @@ from qgis.core import (Qgis,
                        QgsProcessingParameterRasterDestination,
                        QgsProcessingParameterRasterLayer,
                        QgsProcessingParameterString,
+                       QgsProcessingParameterVectorLayer,
                        QgsRasterFileWriter)
 
 from . import tool
-from .tool_algorithm import ToolAlgorithm
+from .tool_algorithm import ToolAlgorithm, file_of
 
 
 # (CLI value, label) in enum order; the first is the tool's default.
@@ -72,6 +74,9 @@ class FillNodataAlgorithm(ToolAlgorithm):
     INNER_ONLY = 'INNER_ONLY'
     FILL_FROM = 'FILL_FROM'
     MAX_VOID = 'MAX_VOID'
+    MORPH = 'MORPH'
+    RIVERS = 'RIVERS'
+    RIDGES = 'RIDGES'
     CREATION_OPTIONS = 'OPTIONS'
     EXTRA = 'EXTRA'
     OUTPUT = 'OUTPUT'
@@ -146,6 +151,13 @@ class FillNodataAlgorithm(ToolAlgorithm):
                 self.addParameter(QgsProcessingParameterString(
                     self.MAX_VOID, self.tr('Leave voids larger than (cells, or an area: 2.5km2, 40ha; 0 = no cap)'),
                     defaultValue='0'))
+                self.addParameter(QgsProcessingParameterBoolean(
+                    self.MORPH, self.tr('Carry valleys through the voids, no filled pit (for hydrology)'),
+                    defaultValue=False))
+                for name, label in ((self.RIVERS, 'River lines the fill follows through the voids'),
+                                    (self.RIDGES, 'Ridge lines the fill follows through the voids')):
+                    self.addParameter(QgsProcessingParameterVectorLayer(
+                        name, self.tr(label), [QgsProcessing.TypeVectorLine], optional=True))
         options = QgsProcessingParameterString(
             self.CREATION_OPTIONS, self.tr('Creation options'), defaultValue='', optional=True)
         options.setFlags(options.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
@@ -264,6 +276,12 @@ class FillNodataAlgorithm(ToolAlgorithm):
                 max_void = (self.parameterAsString(parameters, self.MAX_VOID, context) or '').strip()
                 if max_void not in ('', '0'):
                     args += ['-maxvoid', max_void]  # the tool checks it and says what is wrong
+                if self.parameterAsBoolean(parameters, self.MORPH, context):
+                    args += ['-morph', 'auto']
+                for name, flag, what in ((self.RIVERS, '-rivers', 'river'), (self.RIDGES, '-ridges', 'ridge')):
+                    lines = self.parameterAsVectorLayer(parameters, name, context)
+                    if lines is not None:
+                        args += [flag, file_of(lines, what + ' lines')]
 
         output = self.parameterAsOutputLayer(parameters, self.OUTPUT, context)
         if not output:

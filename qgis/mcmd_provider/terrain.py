@@ -27,7 +27,7 @@ from qgis.core import (Qgis,
                        QgsRasterFileWriter)
 
 from . import tool
-from .tool_algorithm import ToolAlgorithm
+from .tool_algorithm import ToolAlgorithm, file_of
 
 TERRAIN_TOOL = 'mcmd_terrain'
 
@@ -83,15 +83,6 @@ def find_terrain_executable():
         return on_path
     raise tool.ToolError(f'{TERRAIN_TOOL} was not found beside mcmd_fillnodata nor on PATH; build it '
                          f'(build/bin/{TERRAIN_TOOL}) and put it next to the configured mcmd_fillnodata.')
-
-
-def file_of(layer, what):
-    """The file behind a layer, or QgsProcessingException."""
-    path = layer.source().split('|')[0]
-    if not os.path.isfile(path):
-        raise QgsProcessingException(f'The {what} layer must be a file (its source is "{layer.source()}"); '
-                                     'save it to a file first.')
-    return path
 
 
 class TerrainAlgorithm(ToolAlgorithm):

@@ -4,11 +4,20 @@ dialog's panel and behind its Help button."""
 
 import os
 
-from qgis.core import QgsProcessingAlgorithm
+from qgis.core import QgsProcessingAlgorithm, QgsProcessingException
 from qgis.PyQt.QtCore import QCoreApplication, QUrl
 from qgis.PyQt.QtGui import QIcon
 
 ICON = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'icon.svg')
+
+
+def file_of(layer, what):
+    """The file behind a layer (the tools read files), or QgsProcessingException."""
+    path = layer.source().split('|')[0]
+    if not os.path.isfile(path):
+        raise QgsProcessingException(f'The {what} layer must be a file (its source is "{layer.source()}"); '
+                                     'save it to a file first.')
+    return path
 
 
 class ToolAlgorithm(QgsProcessingAlgorithm):

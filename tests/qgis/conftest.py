@@ -7,6 +7,7 @@ or by hand the same way. Everything here is real: the real CLI, the real QGIS.
 The tests skip only when QGIS's Python bindings cannot be imported.
 """
 
+import json
 import os
 import shutil
 import subprocess
@@ -130,3 +131,15 @@ def run_cli(cli, args, check=True):
         raise AssertionError(f'{cli} {" ".join(args)} failed ({proc.returncode}):\n'
                              f'{proc.stdout}\n{proc.stderr}')
     return proc
+
+
+def write_lines(path, lines, x0=500000.0, y0=4200000.0, cell=30.0):
+    """Pixel polylines as GeoJSON LineStrings in EPSG:32611 (x0, y0: the raster's origin)."""
+    features = [{'type': 'Feature', 'properties': {},
+                 'geometry': {'type': 'LineString',
+                              'coordinates': [[x0 + cell * (x + 0.5), y0 - cell * (y + 0.5)] for x, y in line]}}
+                for line in lines]
+    with open(path, 'w') as f:
+        json.dump({'type': 'FeatureCollection',
+                   'crs': {'type': 'name', 'properties': {'name': 'urn:ogc:def:crs:EPSG::32611'}},
+                   'features': features}, f)

@@ -11,9 +11,10 @@ import shutil
 import subprocess
 import zipfile
 
+import numpy as np
 import pytest
 
-from conftest import REPO, cli_path, plugin_root, run_cli
+from conftest import REPO, cli_path, plugin_root, run_cli, write_lines
 from test_provider import assert_same_raster, read_bands
 
 QGIS_PROCESS = '/usr/bin/qgis_process.bin'
@@ -157,3 +158,29 @@ def test_qgis_process_fill_from(qp_env, cli, data, tmp_path):
     _, _, [(a, _, _)] = read_bands(out)
     _, _, [(b, _, _)] = read_bands(plain)
     assert a.tobytes() != b.tobytes()
+
+
+def test_qgis_process_morphology_and_lines(qp_env, cli, data, tmp_path):
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    help_text = qgis_process(qp_env, 'help', 'mcmd:fillnodata').stdout
+    assert 'MORPH' in help_text and 'RIVERS' in help_text and 'RIDGES' in help_text
+    assert 'Carry valleys through the voids' in help_text
+    _, _, [(z, nodata, _)] = read_bands(data('sample_dem.tif', 'look'))
+    # A river across the widest row of void cells, from a known cell to a known cell.
+    y = int(np.argmax((z == nodata).sum(axis=1)))
+    cols = np.flatnonzero(z[y] == nodata)
+    river = [(max(0, cols[0] - 3), y), (min(z.shape[1] - 1, cols[-1] + 3), y)]
+    rivers = str(tmp_path / 'rivers.geojson')
+    write_lines(rivers, [river], x0=350000.0, y0=4110000.0)
+    plain = str(tmp_path / 'plain.tif')
+    run_cli(cli, ['-q', data('sample_dem.tif', 'plain'), plain])
+    cases = [(['MORPH=true'], ['-morph', 'auto']), ([f'RIVERS={rivers}'], ['-rivers', rivers])]
+    for k, (params, flags) in enumerate(cases):
+        out, ref = str(tmp_path / f'qp{k}.tif'), str(tmp_path / f'cli{k}.tif')
+        run_cli(cli, ['-q', *flags, data('sample_dem.tif', f'cli{k}'), ref])
+        qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={data("sample_dem.tif", f"in{k}")}',
+                     *params, f'OUTPUT={out}')
+        assert_same_raster(out, ref)
+        _, _, [(a, _, _)] = read_bands(out)
+        _, _, [(b, _, _)] = read_bands(plain)
+        assert a.tobytes() != b.tobytes(), params  # the option reached the fill

@@ -4,13 +4,12 @@ The algorithm's command must be the tool's: each run is compared cell for cell
 with mcmd_terrain run directly with the same options.
 """
 
-import json
 import os
 
 import numpy as np
 import pytest
 
-from conftest import cli_path, run_cli
+from conftest import cli_path, run_cli, write_lines
 from test_provider import assert_same_raster, read_bands
 from test_qgis_process import qgis_process, qp_env  # noqa: F401 (a fixture)
 
@@ -60,18 +59,6 @@ def write_sketch(folder, n=129):
         mem.GetRasterBand(b + 1).WriteArray(rgb[b])
     gdal.GetDriverByName('PNG').CreateCopy(str(folder / 'states.png'), mem)
     return str(folder / 'sketch.png'), str(folder / 'states.png'), grey
-
-
-def write_lines(path, lines, x0=500000.0, y0=4200000.0, cell=30.0):
-    """Pixel polylines as GeoJSON LineStrings in EPSG:32611."""
-    features = [{'type': 'Feature', 'properties': {},
-                 'geometry': {'type': 'LineString',
-                              'coordinates': [[x0 + cell * (x + 0.5), y0 - cell * (y + 0.5)] for x, y in line]}}
-                for line in lines]
-    with open(path, 'w') as f:
-        json.dump({'type': 'FeatureCollection',
-                   'crs': {'type': 'name', 'properties': {'name': 'urn:ogc:def:crs:EPSG::32611'}},
-                   'features': features}, f)
 
 
 def run_terrain(qp_env, *params, check=True):  # noqa: F811
