@@ -81,6 +81,15 @@ std::vector<std::uint8_t> ponded(const MemoryRaster& m) {
   return out;
 }
 
+// Cells of a filled gorge (valley()) ponded that the void-free gorge does
+// not pond: the dam a fill builds across the valley.
+int new_pond_cells(const MemoryRaster& m) {
+  const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(m.w, m.h, valley, -100, -100, 1));
+  int n = 0;
+  for (std::size_t i = 0; i < pond.size(); ++i) n += pond[i] && !truth[i];
+  return n;
+}
+
 // The steepest-descent path on the raw values from (x, y) until the border
 // or a cell with no lower neighbour (an independent D8, no flooding).
 std::vector<std::pair<int, int>> d8_path(const MemoryRaster& m, int x, int y) {
@@ -228,10 +237,7 @@ TEST(MorphAuto, ValleyThroughAVoidStaysContinuousAndDescending) {
   FillParams p;
   p.morph.channels = true;
   fill_raster(m.access(), p, TilingParams{});
-  const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(121, 161, valley, -100, -100, 1));
-  int new_ponds = 0;
-  for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
-  EXPECT_EQ(new_ponds, 0);  // no pond in the void nor upstream of it
+  EXPECT_EQ(new_pond_cells(m), 0);  // no pond in the void nor upstream of it
   // The floor (the lowest cell of each row crossing the void) falls downstream.
   double previous = 1e300;
   for (int y = 62; y <= 98; ++y) {
@@ -245,10 +251,7 @@ TEST(MorphAuto, ValleyThroughAVoidStaysContinuousAndDescending) {
 TEST(MorphAuto, TheDefaultFillDamsTheSameValley) {  // what the test above guards against
   MemoryRaster m = with_disc_void(121, 161, valley, valley_axis(80), 80, 18);
   fill_raster(m.access(), FillParams{}, TilingParams{});
-  const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(121, 161, valley, -100, -100, 1));
-  int new_ponds = 0;
-  for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
-  EXPECT_GT(new_ponds, 100);
+  EXPECT_GT(new_pond_cells(m), 100);
 }
 
 // The gorge with a disc void across its floor and `small` 3×3 voids on a
@@ -296,10 +299,7 @@ TEST(MorphAuto, EachFieldsOrTheRastersDrainageKeepsTheGorgeAndTheBits) {
       fill_raster(m.access(), p, t);
       if (first.empty()) {
         first = m.z;
-        const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(121, 161, valley, -100, -100, 1));
-        int new_ponds = 0;
-        for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
-        EXPECT_EQ(new_ponds, 0) << small << " small voids";
+        EXPECT_EQ(new_pond_cells(m), 0) << small << " small voids";
       } else {
         EXPECT_TRUE(m.z == first) << small << " small voids, " << threads << " threads";
       }
@@ -337,10 +337,7 @@ TEST(MorphAuto, ATiledRasterRoutesTheGorgeThroughAVoidSolvedAlone) {
         continue;
       }
       first = m.z;
-      const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(121, 161, valley, -100, -100, 1));
-      int new_ponds = 0;
-      for (std::size_t i = 0; i < pond.size(); ++i) new_ponds += pond[i] && !truth[i];
-      EXPECT_EQ(new_ponds, 0);  // the default dams it: TheDefaultFillDamsTheSameValley
+      EXPECT_EQ(new_pond_cells(m), 0);  // the default dams it: TheDefaultFillDamsTheSameValley
     }
   }
 }

@@ -59,9 +59,14 @@ struct CancelOnExit {
 
 }  // namespace
 
+namespace {
+// With -morph auto a small component is read and solved in its void field.
+bool in_field(const TilePlan& plan, const Job& job) { return job.component && plan.params.morph.channels; }
+}  // namespace
+
 std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan& plan, const Job& job) {
   auto in = std::make_shared<JobInput>();
-  if (job.component && plan.params.morph.channels) {
+  if (in_field(plan, job)) {
     in->field = void_field_rect(plan.small[job.index].box, raster.width, raster.height);
     in->window.rect = ReadRect{in->field.x0, in->field.y0, in->field.width(), in->field.height()};
   } else if (job.component) {
@@ -84,7 +89,7 @@ std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan&
 JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job& job, const JobInput& in,
                     double max_distance, const ProgressFn& progress) {
   JobResult r;
-  if (job.component && plan.params.morph.channels) {
+  if (in_field(plan, job)) {
     r.values = solve_component_in_field(plan.small[job.index], in.field, in.window.z, in.window.valid.data(),
                                         plan.guide, plan.params, progress, plan.lines);
   } else if (job.component) {
