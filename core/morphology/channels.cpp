@@ -78,6 +78,28 @@ std::int32_t fill_outlet(const std::vector<std::int32_t>& receiver, const Channe
   return p;
 }
 
+// The fall's slope where it leaves the inflow, as a multiple of the straight
+// fall's: halfway between 1 and the fill's own slope over its first
+// kStartSteps path cells (at least 1/2: a fill that rises there, dammed,
+// still falls). A valley floor often keeps its gentle gradient into the
+// void before a step down (a hanging valley); the straight fall alone cut
+// such floors far below the valley (Half Dome: 60 m under the fill).
+// Measured on the valley voids against the straight fall: RMSE −2 % on
+// average, F1 mean 0.551 → 0.562 (blobs 0.567 → 0.575).
+constexpr std::size_t kStartSteps = 4;
+double start_slope(const std::vector<double>& fill, const std::vector<double>& along, double drop) {
+  const std::size_t k = std::min(kStartSteps, (fill.size() - 1) / 3);
+  if (k == 0 || !(drop > 0)) return 1.0;
+  const double own = (fill[0] - fill[k]) / along[k] * along.back() / drop;
+  return std::min(0.5 * (1.0 + std::max(0.0, own)), 2.0 * M_SQRT2);  // ≤ √8: the curve stays monotone
+}
+
+// The share of the fall done at t ∈ [0, 1] along the path: the cubic
+// Hermite curve leaving at slope `start` (× the straight fall's) and
+// arriving at the straight fall's slope; t itself for start = 1. Monotone
+// for start² + 1 ≤ 9 (Fritsch & Carlson 1980).
+double fall_shape(double t, double start) { return 2.0 * t * t - t * t * t + start * t * (1.0 - t) * (1.0 - t); }
+
 // Least-squares non-increasing fit of v (pool adjacent violators).
 std::vector<double> non_increasing_fit(const std::vector<double>& v) {
   std::vector<double> mean;
@@ -171,7 +193,7 @@ class Router {
   }
 
   // Heights from top (path[0]) to bottom (path.back()): the mean of the
-  // straight fall along the path and the fill's non-increasing fit.
+  // fall along the path (fall_shape) and the fill's non-increasing fit.
   void set_heights(const std::vector<std::int32_t>& path, double top, double bottom) {
     std::vector<double> along(path.size(), 0.0);
     for (std::size_t k = 1; k < path.size(); ++k) along[k] = along[k - 1] + g_.distance(path[k - 1], path[k]);
@@ -180,9 +202,10 @@ class Router {
     fill.front() = top;
     fill.back() = bottom;
     std::vector<double> fit = non_increasing_fit(fill);
+    const double start = start_slope(fill, along, top - bottom);
     for (std::size_t k = 1; k + 1 < path.size(); ++k) {
-      const double straight = top + (bottom - top) * along[k] / along.back();
-      const double z = 0.5 * (straight + std::clamp(fit[k], bottom, top));
+      const double fall = top - (top - bottom) * fall_shape(along[k] / along.back(), start);
+      const double z = 0.5 * (fall + std::clamp(fit[k], bottom, top));
       const std::int32_t c = path[k];
       if (!f_.own[c]) continue;
       river_[c] = on_river_[c] ? std::min(river_[c], z) : z;

@@ -39,8 +39,10 @@ struct RiverCell {
 // exp(8·(fill − lowest)/(fill's range)) (it keeps to the fill's valley
 // floor), and it ends where it meets a path already routed (a tributary
 // joins). Its heights fall from the inflow's to the
-// outlet's (or the junction's): the mean of the straight fall and the
-// least-squares non-increasing fit of the fill along the path.
+// outlet's (or the junction's): the mean of a fall that leaves the inflow
+// between the fill's slope and the straight fall's and arrives at the
+// straight fall's, and the least-squares non-increasing fit of the fill
+// along the path.
 // Post: cells are own cells, each once, heights finite; empty when no
 // inflow reaches min_inflow.
 std::vector<RiverCell> route_channels(const ChannelField& f, double min_inflow);

@@ -81,10 +81,10 @@ std::vector<std::uint8_t> ponded(const MemoryRaster& m) {
   return out;
 }
 
-// Cells of a filled gorge (valley()) ponded that the void-free gorge does
-// not pond: the dam a fill builds across the valley.
-int new_pond_cells(const MemoryRaster& m) {
-  const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(m.w, m.h, valley, -100, -100, 1));
+// Cells of a filled terrain (the gorge, valley(), unless told) ponded that
+// the void-free terrain does not pond: the dam a fill builds across the valley.
+int new_pond_cells(const MemoryRaster& m, double (*terrain)(int, int) = valley) {
+  const std::vector<std::uint8_t> pond = ponded(m), truth = ponded(with_disc_void(m.w, m.h, terrain, -100, -100, 1));
   int n = 0;
   for (std::size_t i = 0; i < pond.size(); ++i) n += pond[i] && !truth[i];
   return n;
@@ -340,6 +340,31 @@ TEST(MorphAuto, ATiledRasterRoutesTheGorgeThroughAVoidSolvedAlone) {
       EXPECT_EQ(new_pond_cells(m), 0);  // the default dams it: TheDefaultFillDamsTheSameValley
     }
   }
+}
+
+// A hanging valley: a floor falling gently south, then a 120 m step down
+// over 10 rows; a void covers the gentle floor and the top of the step.
+double hanging_floor(int y) { return 1000.0 - 0.2 * y - 12.0 * std::clamp(y - 100, 0, 10); }
+double hanging_valley(int x, int y) { return hanging_floor(y) + 80.0 * std::tanh(std::abs(x - 60) / 5.0); }
+
+// The channel keeps the floor's gentle fall into the void instead of
+// cutting a straight line down to the step's foot.
+TEST(MorphAuto, AChannelKeepsAHangingValleysFloorAboveTheStep) {
+  MemoryRaster m = with_disc_void(121, 161, hanging_valley, 60, 84, 22);
+  FillParams p;
+  p.morph.channels = true;
+  fill_raster(m.access(), p, TilingParams{});
+  EXPECT_EQ(new_pond_cells(m, hanging_valley), 0);
+  // The floor (the lowest cell across the valley) below the true floor,
+  // on three rows: 12.7 m on average; a straight fall from the inflow to
+  // the outlet in place of the start_slope curve left 15.4 m.
+  double below = 0.0;
+  for (int y = 70; y <= 90; y += 10) {
+    double floor = 1e300;
+    for (int x = 40; x <= 80; ++x) floor = std::min(floor, m.at(x, y));
+    below += (hanging_floor(y) - floor) / 3.0;
+  }
+  EXPECT_LT(below, 14.0);
 }
 
 // A long narrow void across a plane that falls south and, gently, east:
