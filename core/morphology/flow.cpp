@@ -34,18 +34,6 @@ double next_above(double v) {
 
 bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
 
-// A land cell where water can leave: the border, or beside an off or sink cell.
-bool is_seed(int x, int y, int w, int h, const FlowCell* kind) {
-  if (on_border(x, y, w, h)) return true;
-  bool seed = false;
-  for_each_neighbour(x, y, w, h, [&](int, std::int32_t n) { seed = seed || kind[n] != FlowCell::land; });
-  return seed;
-}
-
-}  // namespace
-
-namespace {
-
 // One Priority-Flood: the heap of reached cells at their own height, and
 // the queue of cells raised to the water level (pits and flats: Barnes et
 // al. 2014's pit queue), taken first in the order they were reached, so
@@ -55,26 +43,36 @@ class Flood {
   Flood(const double* z, int w, int h, const FlowCell* kind)
       : z_(z), w_(w), h_(h), level_(cells(), std::numeric_limits<double>::quiet_NaN()), done_(cells()) {
     // One byte per cell for the neighbour tests, most of which find a cell
-    // already reached (or not land).
-    for (std::size_t i = 0; i < cells(); ++i) done_[i] = kind[i] != FlowCell::land;
+    // already reached (or not land): kReached, and kBorder on the field's
+    // border (all reached from the start: seeds or not land), so that a
+    // cell's neighbours need no bounds test unless it is flagged.
+    for (std::size_t i = 0; i < cells(); ++i) done_[i] = kind[i] != FlowCell::land ? kReached : 0;
+    // The seeds, where water can leave: the land cells on the border and
+    // beside an off or sink cell, flagged from those cells (fewer than the
+    // land's), then pushed in raster order.
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         const std::int32_t i = y * w + x;
-        if (done_[i] || !is_seed(x, y, w, h, kind)) continue;
-        done_[i] = 1;
-        level_[i] = z[i];
-        heap_.push(z[i], i);
+        if (on_border(x, y, w, h)) done_[i] |= kBorder | kSeed;
+        if (kind[i] != FlowCell::land)
+          for_each_neighbour(x, y, w, h, [&](int, std::int32_t j) { done_[j] |= kSeed; });
       }
+    for (std::int32_t i = 0; i < static_cast<std::int32_t>(cells()); ++i) {
+      const bool seed = (done_[i] & (kReached | kSeed)) == kSeed;  // land and flagged
+      done_[i] = static_cast<std::uint8_t>((done_[i] & ~kSeed) | (seed ? kReached : 0));
+      if (!seed) continue;
+      level_[i] = z[i];
+      heap_.push(z[i], i);
+    }
   }
 
   std::vector<double> run() && {
     for (std::int32_t i; next(i);) {
       const double above = next_above(level_[i]);
-      const int x = i % w_, y = i / w_;
-      if (x > 0 && y > 0 && x < w_ - 1 && y < h_ - 1) {  // interior: no bounds tests
+      if (!(done_[i] & kBorder)) {  // interior: no bounds tests
         for (const std::int32_t d : {1, w_ + 1, w_, w_ - 1, -1, -w_ - 1, -w_, -w_ + 1}) reach(i + d, above);
       } else {
-        for_each_neighbour(x, y, w_, h_, [&](int, std::int32_t j) { reach(j, above); });
+        for_each_neighbour(i % w_, i / w_, w_, h_, [&](int, std::int32_t j) { reach(j, above); });
       }
     }
     return std::move(level_);
@@ -95,8 +93,8 @@ class Flood {
   }
 
   void reach(std::int32_t j, double above) {
-    if (done_[j]) return;
-    done_[j] = 1;
+    if (done_[j]) return;  // border cells are all reached: only interior ones get here
+    done_[j] = kReached;
     if (z_[j] < above) {
       level_[j] = above;
       pit_.push_back(j);
@@ -105,6 +103,8 @@ class Flood {
       heap_.push(z_[j], j);
     }
   }
+
+  static constexpr std::uint8_t kReached = 1, kBorder = 2, kSeed = 4;
 
   const double* z_;
   int w_, h_;
