@@ -25,20 +25,21 @@ struct Geometry {
   }
 };
 
-// Constraint cells 8-adjacent to a cell of the component.
+// Constraint cells 8-adjacent to a cell of the component, in raster order:
+// flagged from the component's cells (a small part of the field).
 std::vector<std::int32_t> rim_cells(const ChannelField& f) {
-  std::vector<std::int32_t> rim;
+  std::vector<std::uint8_t> beside(static_cast<std::size_t>(f.w) * f.h, 0);
   for (int y = 0; y < f.h; ++y)
     for (int x = 0; x < f.w; ++x) {
-      const std::int32_t i = y * f.w + x;
-      if (!is_constraint(f.state[i]) || f.own[i]) continue;
-      bool beside = false;
-      for (int k = 0; k < 8 && !beside; ++k) {
+      if (!f.own[static_cast<std::size_t>(y) * f.w + x]) continue;
+      for (int k = 0; k < 8; ++k) {
         const int nx = x + kDx[k], ny = y + kDy[k];
-        beside = nx >= 0 && ny >= 0 && nx < f.w && ny < f.h && f.own[ny * f.w + nx];
+        if (nx >= 0 && ny >= 0 && nx < f.w && ny < f.h) beside[static_cast<std::size_t>(ny) * f.w + nx] = 1;
       }
-      if (beside) rim.push_back(i);
     }
+  std::vector<std::int32_t> rim;
+  for (std::int32_t i = 0; i < static_cast<std::int32_t>(beside.size()); ++i)
+    if (beside[i] && is_constraint(f.state[i]) && !f.own[i]) rim.push_back(i);
   return rim;
 }
 
