@@ -1,5 +1,6 @@
 #include "morphology/flow.hpp"
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <functional>
@@ -34,6 +35,10 @@ double next_above(double v) {
 
 bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
 
+// Index offsets of an interior cell's neighbours in a w-wide field, in the
+// order of kDx/kDy (for_each_neighbour's, without its bounds tests).
+std::array<std::int32_t, 8> neighbour_offsets(int w) { return {1, w + 1, w, w - 1, -1, -w - 1, -w, -w + 1}; }
+
 // One Priority-Flood: the heap of reached cells at their own height, and
 // the queue of cells raised to the water level (pits and flats: Barnes et
 // al. 2014's pit queue), taken first in the order they were reached, so
@@ -41,7 +46,8 @@ bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w -
 class Flood {
  public:
   Flood(const double* z, int w, int h, const FlowCell* kind)
-      : z_(z), w_(w), h_(h), level_(cells(), std::numeric_limits<double>::quiet_NaN()), done_(cells()) {
+      : z_(z), w_(w), h_(h), offset_(neighbour_offsets(w)), level_(cells(), std::numeric_limits<double>::quiet_NaN()),
+        done_(cells()) {
     // One byte per cell for the neighbour tests, most of which find a cell
     // already reached (or not land): kReached, and kBorder on the field's
     // border (all reached from the start: seeds or not land), so that a
@@ -70,7 +76,7 @@ class Flood {
     for (std::int32_t i; next(i);) {
       const double above = next_above(level_[i]);
       if (!(done_[i] & kBorder)) {  // interior: no bounds tests
-        for (const std::int32_t d : {1, w_ + 1, w_, w_ - 1, -1, -w_ - 1, -w_, -w_ + 1}) reach(i + d, above);
+        for (const std::int32_t d : offset_) reach(i + d, above);
       } else {
         for_each_neighbour(i % w_, i / w_, w_, h_, [&](int, std::int32_t j) { reach(j, above); });
       }
@@ -108,6 +114,7 @@ class Flood {
 
   const double* z_;
   int w_, h_;
+  std::array<std::int32_t, 8> offset_;
   std::vector<double> level_;
   std::vector<std::uint8_t> done_;
   RadixHeap heap_;
@@ -134,7 +141,7 @@ std::int32_t receiver_of(std::int32_t i, int x, int y, int w, int h, const FlowC
     if (slope > steepest) steepest = slope, best = j;
   };
   if (x > 0 && y > 0 && x < w - 1 && y < h - 1) {  // interior: no bounds tests (the same order)
-    const std::int32_t offset[8] = {1, w + 1, w, w - 1, -1, -w - 1, -w, -w + 1};
+    const std::array<std::int32_t, 8> offset = neighbour_offsets(w);
     for (int k = 0; k < 8; ++k) consider(k, i + offset[k]);
   } else {
     for_each_neighbour(x, y, w, h, consider);

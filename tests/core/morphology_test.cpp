@@ -90,6 +90,13 @@ int new_pond_cells(const MemoryRaster& m, double (*terrain)(int, int) = valley) 
   return n;
 }
 
+// The floor of row y across columns [x0, x1): its lowest cell.
+double row_floor(const MemoryRaster& m, int y, int x0, int x1) {
+  double floor = 1e300;
+  for (int x = x0; x < x1; ++x) floor = std::min(floor, m.at(x, y));
+  return floor;
+}
+
 // The steepest-descent path on the raw values from (x, y) until the border
 // or a cell with no lower neighbour (an independent D8, no flooding).
 std::vector<std::pair<int, int>> d8_path(const MemoryRaster& m, int x, int y) {
@@ -241,8 +248,7 @@ TEST(MorphAuto, ValleyThroughAVoidStaysContinuousAndDescending) {
   // The floor (the lowest cell of each row crossing the void) falls downstream.
   double previous = 1e300;
   for (int y = 62; y <= 98; ++y) {
-    double floor = 1e300;
-    for (int x = 0; x < m.w; ++x) floor = std::min(floor, m.at(x, y));
+    const double floor = row_floor(m, y, 0, m.w);
     EXPECT_LE(floor, previous) << "row " << y;
     previous = floor;
   }
@@ -359,11 +365,7 @@ TEST(MorphAuto, AChannelKeepsAHangingValleysFloorAboveTheStep) {
   // on three rows: 12.7 m on average; a straight fall from the inflow to
   // the outlet in place of the start_slope curve left 15.4 m.
   double below = 0.0;
-  for (int y = 70; y <= 90; y += 10) {
-    double floor = 1e300;
-    for (int x = 40; x <= 80; ++x) floor = std::min(floor, m.at(x, y));
-    below += (hanging_floor(y) - floor) / 3.0;
-  }
+  for (int y = 70; y <= 90; y += 10) below += (hanging_floor(y) - row_floor(m, y, 40, 81)) / 3.0;
   EXPECT_LT(below, 14.0);
 }
 

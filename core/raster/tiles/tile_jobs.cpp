@@ -57,11 +57,9 @@ struct CancelOnExit {
   ~CancelOnExit() { flag = true; }
 };
 
-}  // namespace
-
-namespace {
 // With -morph auto a small component is read and solved in its void field.
 bool in_field(const TilePlan& plan, const Job& job) { return job.component && plan.params.morph.channels; }
+
 }  // namespace
 
 std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan& plan, const Job& job) {
