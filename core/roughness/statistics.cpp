@@ -62,12 +62,19 @@ struct PairRun {
   }
 }
 
+// A row with fewer constraints than 1 in kSparseRow of its cells (scattered
+// samples: 3.3 % kept) takes its pairs from the list of its constraints, not
+// lane by lane over every cell: on a 2100×1100 crop of the 3.3 %-kept mosaic,
+// -rs auto's pair sums 138 -> 63 M instructions, the same output.
+constexpr std::size_t kSparseRow = 8;
+
 // The pair sums of the blocks of block row bj into `out`, on a copy of its
-// rows and the 16 below as pair_run's z and m (buffers reused by the caller).
-// Cloned for AVX2 as add_octave is (the same bits).
+// rows and the 16 below as pair_run's z and m (buffers reused by the caller;
+// `known`: a sparse row's constraint columns). Cloned for AVX2 as add_octave
+// is (the same bits).
 MCMD_AVX2_CLONES
-void block_row_pairs(const RoughField& g, const Blocks& b, int bj,
-                     std::vector<double>& z, std::vector<double>& m, std::vector<LagSums>& out) {
+void block_row_pairs(const RoughField& g, const Blocks& b, int bj, std::vector<double>& z, std::vector<double>& m,
+                     std::vector<int>& known, std::vector<LagSums>& out) {
   constexpr int kReach = 16;  // the longest lag
   const int y0 = b.y0(bj), y1 = b.y1(bj, g.h);
   if (y1 <= y0) return;
@@ -78,11 +85,28 @@ void block_row_pairs(const RoughField& g, const Blocks& b, int bj,
   m.resize(cells);
   constraint_values(g.state + first, g.z + first, cells, z.data(), m.data());
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - ry0) * g.w + x; };
-  for (int y = y0; y < y1; ++y)
+  for (int y = y0; y < y1; ++y) {
+    known.clear();
+    const double* mrow = &m[at(0, y)];
+    for (int x = 0; x < g.w; ++x)
+      if (mrow[x] != 0.0) known.push_back(x);
+    const bool sparse = known.size() * kSparseRow < static_cast<std::size_t>(g.w);
     for (int l = 0; l < kLags; ++l) {
       const int dx = kLagDx[l], py = y + kLagDy[l];
       if (py < 0 || py >= g.h || dx >= g.w) continue;
       if (l >= kLaplacianLags && positive_mod(g.y0 + y, kLongLagRowStep) != 0) continue;
+      if (sparse) {
+        for (const int x : known) {
+          if (x + dx >= g.w) break;
+          const std::size_t p = at(x + dx, py);
+          if (m[p] == 0.0) continue;
+          const double d = z[p] - z[at(x, y)];
+          LagSums& s = out[b.index((x + b.ox) / kBlock, bj)];
+          s.sum[l] += d * d;
+          s.count[l] += 1.0;
+        }
+        continue;
+      }
       for (int bi = 0; bi < b.nx; ++bi) {
         const int x0 = b.x0(bi), x1 = std::min(b.x1(bi, g.w), g.w - dx);
         if (x1 <= x0) continue;
@@ -92,6 +116,7 @@ void block_row_pairs(const RoughField& g, const Blocks& b, int bj,
         s.count[l] += r.count;
       }
     }
+  }
 }
 
 }  // namespace
@@ -102,8 +127,9 @@ std::vector<LagSums> pair_sums(const RoughField& g, const Blocks& b,
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     std::vector<double> z, m;
+    std::vector<int> known;
 #pragma omp for schedule(dynamic)
-    for (int bj = 0; bj < b.ny; ++bj) block_row_pairs(g, b, bj, z, m, out);
+    for (int bj = 0; bj < b.ny; ++bj) block_row_pairs(g, b, bj, z, m, known, out);
   }
   return out;
 }

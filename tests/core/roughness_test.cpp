@@ -348,3 +348,39 @@ TEST(Roughness, RoughnessIsConditionedOnTheConstraints) {
 }
 
 }  // namespace
+
+// The known terrain's pair sums per lag (the variogram and the Laplacian
+// targets) equal a brute-force count over every pair of constraints, on
+// scattered samples (rows summed from their list of constraints) and on
+// dense data (rows summed lane by lane) alike.
+TEST(Roughness, PairSumsCountEveryPairOfConstraints) {
+  const Grid truth = fbm(7, 0.5, 11);
+  const int n = truth.side();
+  for (const double kept : {0.03, 0.9}) {
+    std::vector<CellState> state(truth.elevations().size(), CellState::unknown);
+    std::mt19937 rng(5);
+    std::bernoulli_distribution keep(kept);
+    for (CellState& s : state)
+      if (keep(rng)) s = CellState::known;
+    const mcmd::RoughField field{n, n, 0, 0, truth.elevations().data(), state.data()};
+    const mcmd::rough::Blocks blocks = mcmd::rough::block_lattice(field);
+    mcmd::rough::LagSums got;
+    for (const mcmd::rough::LagSums& s : mcmd::rough::pair_sums(field, blocks, 2)) got.add(s);
+    for (int l = 0; l < mcmd::rough::kLags; ++l) {
+      double sum = 0, count = 0;
+      for (int y = 0; y < n; ++y) {
+        if (l >= mcmd::rough::kLaplacianLags && y % mcmd::rough::kLongLagRowStep != 0) continue;
+        for (int x = 0; x < n; ++x) {
+          const int u = x + mcmd::rough::kLagDx[l], v = y + mcmd::rough::kLagDy[l];
+          if (u >= n || v < 0 || v >= n) continue;
+          if (state[truth.index(x, y)] != CellState::known || state[truth.index(u, v)] != CellState::known) continue;
+          const double d = truth.z(u, v) - truth.z(x, y);
+          sum += d * d;
+          count += 1;
+        }
+      }
+      EXPECT_EQ(got.count[l], count) << "lag " << l << ", kept " << kept;
+      EXPECT_NEAR(got.sum[l], sum, 1e-9 * sum) << "lag " << l << ", kept " << kept;
+    }
+  }
+}
