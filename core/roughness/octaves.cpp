@@ -94,7 +94,8 @@ struct SampleRange {
 };
 SampleRange samples_for(long long v0, long long v1) { return {floor_half(v0 - 3), floor_half(v1 + 2) + 1}; }
 
-// The octaves' samples at even raster coordinates, their weights applied: rows sy.k0 .. sy.k1 - 1, columns sx.k0 .. sx.k1 - 1 (times 2).
+// The octaves' samples at even raster coordinates, their weights applied:
+// rows sy.k0 .. sy.k1 - 1, columns sx.k0 .. sx.k1 - 1 (times 2).
 struct Samples {
   SampleRange sx, sy;
   std::vector<double> values;
@@ -142,8 +143,9 @@ void add_interpolated(const OctaveCells& c, Samples& s, std::vector<double>& scr
 // rotated by j golden angles from spacing 4 on, interpolated with
 // Catmull-Rom splines. The nodes are a function of global coordinates, so
 // any window, field or block sees the same value at a cell (the samples
-// too: even raster coordinates). The AVX2 clone takes 4 cells per instruction where the
-// baseline takes 2: the noise's time on White Mountains blobs fell by 16 %.
+// too: even raster coordinates). The AVX2 clone takes 4 cells per
+// instruction where the baseline takes 2: the noise's time on White
+// Mountains blobs fell by 16 %.
 // `node`, `column` and `scratch` are buffers reused by the caller.
 // Every lambda below that takes or returns a Quad is always inlined: a lambda
 // is not cloned with the function around it, so one compiled out of line (as
