@@ -350,9 +350,9 @@ TEST(Roughness, RoughnessIsConditionedOnTheConstraints) {
 }  // namespace
 
 // The known terrain's pair sums per lag (the variogram and the Laplacian
-// targets) equal a brute-force count over every pair of constraints, on
-// scattered samples (rows summed from their list of constraints) and on
-// dense data (rows summed lane by lane) alike.
+// targets) equal a brute-force count over the pairs of constraints from the
+// rows that are sampled, on scattered samples (every row, summed from its
+// list of constraints) and on dense data (even rows, summed lane by lane).
 TEST(Roughness, PairSumsCountEveryPairOfConstraints) {
   const Grid truth = fbm(7, 0.5, 11);
   const int n = truth.side();
@@ -370,6 +370,8 @@ TEST(Roughness, PairSumsCountEveryPairOfConstraints) {
       double sum = 0, count = 0;
       for (int y = 0; y < n; ++y) {
         if (l >= mcmd::rough::kLaplacianLags && y % mcmd::rough::kLongLagRowStep != 0) continue;
+        const auto row_known = std::count(state.begin() + y * n, state.begin() + (y + 1) * n, CellState::known);
+        if (row_known * 8 >= n && y % 2 != 0) continue;  // a dense row: even rows only
         for (int x = 0; x < n; ++x) {
           const int u = x + mcmd::rough::kLagDx[l], v = y + mcmd::rough::kLagDy[l];
           if (u >= n || v < 0 || v >= n) continue;
