@@ -1,5 +1,6 @@
 #include "roughness/statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -71,6 +72,24 @@ struct PairRun {
 // the smooth fill's 1.475).
 constexpr std::size_t kSparseRow = 8;
 
+// The pairs of lag l from row y's constraints `known` (a sparse row), into
+// their blocks' sums; z and m as for pair_run, cell (x, y) at at(x, y).
+template <class At>
+void add_listed_pairs(const RoughField& g, const Blocks& b, int bj, int y, int l, const std::vector<int>& known,
+                      const std::vector<double>& z, const std::vector<double>& m, const At& at,
+                      std::vector<LagSums>& out) {
+  const int dx = kLagDx[l], py = y + kLagDy[l];
+  for (const int x : known) {
+    if (x + dx >= g.w) break;
+    const std::size_t p = at(x + dx, py);
+    if (m[p] == 0.0) continue;
+    const double d = z[p] - z[at(x, y)];
+    LagSums& s = out[b.index((x + b.ox) / kBlock, bj)];
+    s.sum[l] += d * d;
+    s.count[l] += 1.0;
+  }
+}
+
 // The pair sums of the blocks of block row bj into `out`, on a copy of its
 // rows and the 16 below as pair_run's z and m (buffers reused by the caller;
 // `known`: a sparse row's constraint columns). Cloned for AVX2 as add_octave
@@ -89,29 +108,19 @@ void block_row_pairs(const RoughField& g, const Blocks& b, int bj, std::vector<d
   constraint_values(g.state + first, g.z + first, cells, z.data(), m.data());
   const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - ry0) * g.w + x; };
   for (int y = y0; y < y1; ++y) {
-    const CellState* srow = g.state + g.index(0, y);
-    std::size_t count = 0;  // the row's constraints
-    for (int x = 0; x < g.w; ++x) count += is_constraint(srow[x]);
+    const CellState* row = g.state + g.index(0, y);
+    const auto count = static_cast<std::size_t>(std::count_if(row, row + g.w, is_constraint));
     const bool sparse = count * kSparseRow < static_cast<std::size_t>(g.w);
+    if (!sparse && positive_mod(g.y0 + y, 2) != 0) continue;
     known.clear();
-    if (sparse)
-      for (int x = 0; x < g.w; ++x)
-        if (is_constraint(srow[x])) known.push_back(x);
+    for (int x = 0; sparse && x < g.w; ++x)
+      if (is_constraint(row[x])) known.push_back(x);
     for (int l = 0; l < kLags; ++l) {
       const int dx = kLagDx[l], py = y + kLagDy[l];
       if (py < 0 || py >= g.h || dx >= g.w) continue;
       if (l >= kLaplacianLags && positive_mod(g.y0 + y, kLongLagRowStep) != 0) continue;
-      if (!sparse && positive_mod(g.y0 + y, 2) != 0) continue;
       if (sparse) {
-        for (const int x : known) {
-          if (x + dx >= g.w) break;
-          const std::size_t p = at(x + dx, py);
-          if (m[p] == 0.0) continue;
-          const double d = z[p] - z[at(x, y)];
-          LagSums& s = out[b.index((x + b.ox) / kBlock, bj)];
-          s.sum[l] += d * d;
-          s.count[l] += 1.0;
-        }
+        add_listed_pairs(g, b, bj, y, l, known, z, m, at, out);
         continue;
       }
       for (int bi = 0; bi < b.nx; ++bi) {
