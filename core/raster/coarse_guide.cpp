@@ -172,24 +172,29 @@ double full_tension(int stride) {
 }
 }  // namespace
 
-std::vector<double> CoarseGuide::far_void_weights() const {
+CoarseGuide::FarVoids CoarseGuide::far_voids() const {
   const std::vector<double> dist = distance_to_valid(known_.data(), cw_, ch_);
-  std::vector<double> weight(known_.size(), 0.0);
+  FarVoids far;
+  far.weight.assign(known_.size(), 0.0);
+  far.label.assign(known_.size(), -1);
   std::vector<std::uint8_t> seen(known_);
   std::vector<std::size_t> component, stack;
   for (std::size_t start = 0; start < seen.size(); ++start) {
     if (seen[start]) continue;
-    // The unknown points 8-connected to `start`, and the farthest of them from data.
+    // The unknown points 8-connected to `start`, the farthest of them from
+    // data, and their box.
     component.clear();
     stack.assign(1, start);
     seen[start] = 1;
     double farthest = 0.0;
+    LatticeBox box{cw_, ch_, 0, 0};
     while (!stack.empty()) {
       const std::size_t i = stack.back();
       stack.pop_back();
       component.push_back(i);
       farthest = std::max(farthest, dist[i] * stride_);
       const int x = static_cast<int>(i % cw_), y = static_cast<int>(i / cw_);
+      box = LatticeBox{std::min(box.x0, x), std::min(box.y0, y), std::max(box.x1, x + 1), std::max(box.y1, y + 1)};
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const int nx = x + dx, ny = y + dy;
@@ -202,30 +207,23 @@ std::vector<double> CoarseGuide::far_void_weights() const {
         }
     }
     const double w = far_void_weight(farthest);
-    for (std::size_t i : component) weight[i] = w;
+    if (w == 0) continue;
+    for (std::size_t i : component) {
+      far.weight[i] = w;
+      far.label[i] = static_cast<int>(far.boxes.size());
+    }
+    far.boxes.push_back(box);
   }
-  return weight;
+  return far;
 }
 
-void CoarseGuide::fill_lattice(Grid& g, const FillParams& params, double tension, const ProgressFn& progress,
-                               int threads) const {
-  if (params.method != Method::mcmd) return fill_grid(g, params, progress);
-  ThinPlateSchedule schedule;
-  schedule.tension = tension;
-  schedule.vcycle.threads = threads;
-  thin_plate_fill_scheduled(g, params, schedule, progress);
-}
-
-std::vector<double> CoarseGuide::filled(const std::vector<double>& start, double tension, const FillParams& params,
+std::vector<double> CoarseGuide::filled(const std::vector<double>& start, const FillParams& params,
                                         const ProgressFn& progress, int threads) const {
   std::vector<double> out = start;
-  if (params.method == Method::mcmd && tension == 0) {
+  if (params.method == Method::mcmd) {
     // The lattice as it is, no 2^m+1 padding (a 676×301 lattice padded to
     // 1025² was 5× the work; a 301² one to 513², with -rs auto, half the
-    // guide's time). Not under tension: across a void reaching the
-    // raster's edge, the mirror (a level surface there) is what stops a
-    // coast's slope, which a free edge under tension did not (2.2 km too
-    // high in HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains).
+    // guide's time).
     std::vector<CellState> state(out.size());
     for (std::size_t i = 0; i < state.size(); ++i) state[i] = known_[i] ? CellState::known : CellState::unknown;
     ThinPlateSchedule schedule;
@@ -234,37 +232,96 @@ std::vector<double> CoarseGuide::filled(const std::vector<double>& start, double
     return out;
   }
   Grid g = mirror_padded_grid(start.data(), known_.data(), cw_, ch_, levels_to_cover(cw_, ch_));
-  fill_lattice(g, params, tension, progress, threads);
+  fill_grid(g, params, progress);
   for (int j = 0; j < ch_; ++j)
     for (int i = 0; i < cw_; ++i) out[static_cast<std::size_t>(j) * cw_ + i] = g.z(i, j);
   return out;
 }
 
-std::vector<double> CoarseGuide::plain_and_tense(const std::vector<double>& mean, std::size_t unknown,
-                                                 const FillParams& params, const ProgressFn& progress, int threads) {
+namespace {
+// How far around a far void its tensioned solve reaches: the tensioned
+// operator's response decays over kSlopeReach raster cells, so what lies 8
+// reaches away moves the void's values by less than e^-8 of itself (at
+// least 16 points).
+int tense_margin(int stride) { return std::max(16, static_cast<int>(std::ceil(8.0 * kSlopeReach / stride))); }
+}  // namespace
+
+std::vector<double> CoarseGuide::tense_filled(const std::vector<double>& mean, const FarVoids& far, double tension,
+                                              const FillParams& params, const ProgressFn& progress,
+                                              int threads) const {
+  // The tensioned surface is that of the lattice mirror-padded to a 2^m+1
+  // square (free at the left and top edges, mirrored at the right and
+  // bottom: across a void reaching the raster's edge the mirror, a level
+  // surface there, is what stops a coast's slope; a free edge under tension
+  // left it 2.2 km too high in HugeVoidDoesNotExtrapolateCoastSlopesIntoMountains).
+  // Tension levels a surface off towards the plane it is solved around:
+  // that square's least-squares plane, whose mirrored half tilts it back
+  // towards level. Each far void is then solved in a square of that padded
+  // lattice around its box and margin, around that plane: the same surface
+  // near the void, without solving the whole square (the 4801² blob
+  // mosaic's 601² lattice padded to 1025² faulted 120 MB in for a few blobs).
+  const Plane plane = [&] {  // the padded lattice freed before the solves (the half-void tile: 10 MB of peak)
+    const Grid whole = mirror_padded_grid(mean.data(), known_.data(), cw_, ch_, levels_to_cover(cw_, ch_));
+    return constraint_plane(
+        FieldView{whole.side(), whole.side(), const_cast<double*>(whole.elevations().data()), whole.states().data()});
+  }();
+  ThinPlateSchedule schedule;
+  schedule.tension = tension;
+  schedule.vcycle.threads = threads;
+  std::vector<double> out = mean;
+  const int margin = tense_margin(stride_);
+  for (std::size_t k = 0; k < far.boxes.size(); ++k) {
+    const LatticeBox& v = far.boxes[k];
+    const int x0 = std::max(0, v.x0 - margin), y0 = std::max(0, v.y0 - margin);
+    Grid g(levels_to_cover(std::min(cw_, v.x1 + margin) - x0, std::min(ch_, v.y1 + margin) - y0));
+    for (int j = 0; j < g.side(); ++j)
+      for (int i = 0; i < g.side(); ++i) {
+        const std::size_t from =
+            static_cast<std::size_t>(reflect_index(y0 + j, ch_)) * cw_ + reflect_index(x0 + i, cw_);
+        if (!known_[from]) continue;
+        g.z(i, j) = mean[from] - plane.at(x0 + i, y0 + j);
+        g.state(i, j) = CellState::known;
+      }
+    FieldView field{g.side(), g.side(), g.elevations().data(), g.states().data()};
+    field.own_plane = false;
+    const double n = static_cast<double>(far.boxes.size());
+    thin_plate_with_roughness(field, x0, y0, params, schedule, sub_progress(progress, k / n, (k + 1) / n));
+    for (int j = v.y0; j < v.y1; ++j)
+      for (int i = v.x0; i < v.x1; ++i) {
+        const std::size_t at = static_cast<std::size_t>(j) * cw_ + i;
+        if (far.label[at] == static_cast<int>(k)) out[at] = g.z(i - x0, j - y0) + plane.at(i, j);
+      }
+  }
+  return out;
+}
+
+std::vector<double> CoarseGuide::plain_and_tense(const std::vector<double>& mean, const FarVoids& far,
+                                                 std::size_t unknown, const FillParams& params,
+                                                 const ProgressFn& progress, int threads) {
   const double tension = full_tension(stride_);
   // A large lattice (banded: its solver uses every thread) is solved once
   // then again: solved side by side, the two large solves' buffers set the
   // peak memory of a raster that is half void (3601²: 335 MB against
   // 260 MB, for 0.07 s more). Small ones side by side, each on one thread.
   if (threads <= 1 || unknown >= kBandedMinFree) {
-    value_ = filled(mean, 0.0, params, sub_progress(progress, 0.0, 0.3), threads);
-    return filled(mean, tension, params, sub_progress(progress, 0.3, 1.0), threads);
+    value_ = filled(mean, params, sub_progress(progress, 0.0, 0.3), threads);
+    return tense_filled(mean, far, tension, params, sub_progress(progress, 0.3, 1.0), threads);
   }
-  // The tensioned solve (the larger: a padded lattice) on a helper thread,
+  // The tensioned solves (padded lattices) on a helper thread,
   // which stops when this one is cancelled; progress is this thread's.
   std::atomic<bool> stop{false};
   std::vector<double> tense;
   std::exception_ptr failed;
   std::thread helper([&] {
     try {
-      tense = filled(mean, tension, params, [&stop](double) { return !stop.load(std::memory_order_relaxed); }, 1);
+      tense = tense_filled(mean, far, tension, params,
+                           [&stop](double) { return !stop.load(std::memory_order_relaxed); }, 1);
     } catch (...) {
       failed = std::current_exception();
     }
   });
   try {
-    value_ = filled(mean, 0.0, params, sub_progress(progress, 0.0, 0.9), 1);
+    value_ = filled(mean, params, sub_progress(progress, 0.0, 0.9), 1);
   } catch (...) {
     stop = true;
     helper.join();
@@ -292,17 +349,16 @@ bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress, in
   if (known_count == 0) return false;
   value_ = mean;
   if (known_count < value_.size()) {
-    const std::vector<double> weight =
-        params.method == Method::mcmd ? far_void_weights() : std::vector<double>(value_.size(), 0.0);
-    const bool far = std::any_of(weight.begin(), weight.end(), [](double w) { return w > 0; });
-    if (!far) {
-      value_ = filled(mean, 0.0, params, progress, threads);
+    const FarVoids far = params.method == Method::mcmd ? far_voids() : FarVoids{};
+    if (far.boxes.empty()) {
+      value_ = filled(mean, params, progress, threads);
     } else {
       // Each void's blend of the two surfaces: one weight per void, so the
       // fill stays as smooth as either inside it, and both agree with the
       // known points around it.
-      const std::vector<double> tense = plain_and_tense(mean, value_.size() - known_count, params, progress, threads);
-      for (std::size_t i = 0; i < value_.size(); ++i) value_[i] += weight[i] * (tense[i] - value_[i]);
+      const std::vector<double> tense =
+          plain_and_tense(mean, far, value_.size() - known_count, params, progress, threads);
+      for (std::size_t i = 0; i < value_.size(); ++i) value_[i] += far.weight[i] * (tense[i] - value_[i]);
     }
   }
   ready_ = true;

@@ -42,6 +42,11 @@ bool reaches_far(double farthest);
 // at 256 (docs/tiling.md, the coarse guide); a weight below 1 % is 0.
 double far_void_weight(double farthest);
 
+// Lattice points [x0, x1) × [y0, y1).
+struct LatticeBox {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 class CoarseGuide {
  public:
   CoarseGuide() = default;
@@ -97,20 +102,30 @@ class CoarseGuide {
   double coarse_distance(long long x, long long y) const;
 
  private:
-  // Fill the lattice's unknown points (thin plate under `tension` for the
-  // default method), the solver on `threads` threads (the same bits for any).
-  void fill_lattice(Grid& g, const FillParams& params, double tension, const ProgressFn& progress, int threads) const;
-  // `start` (cw × ch, known points set) filled, under `tension`.
-  std::vector<double> filled(const std::vector<double>& start, double tension, const FillParams& params,
-                             const ProgressFn& progress, int threads) const;
-  // Sets value_ to the plain fill of `mean` and returns its fill under full
-  // tension: side by side on two threads for a small lattice, one after the
-  // other on `threads` threads each for a large one (`unknown` points).
-  std::vector<double> plain_and_tense(const std::vector<double>& mean, std::size_t unknown, const FillParams& params,
-                                      const ProgressFn& progress, int threads);
-  // Per lattice point: far_void_weight of its void (8-connected unknown
-  // points; 0 at known points), distances measured on the lattice.
-  std::vector<double> far_void_weights() const;
+  // `start` (cw × ch, known points set) filled by the method of `params`,
+  // the solver on `threads` threads (the same bits for any).
+  std::vector<double> filled(const std::vector<double>& start, const FillParams& params, const ProgressFn& progress,
+                             int threads) const;
+  // The voids of the lattice (8-connected unknown points) that take some of
+  // the tensioned surface: per point its far_void_weight (0 at known points
+  // and in other voids) and its void's index, -1 outside them; per void its
+  // box. Distances measured on the lattice.
+  struct FarVoids {
+    std::vector<double> weight;
+    std::vector<int> label;
+    std::vector<LatticeBox> boxes;
+  };
+  FarVoids far_voids() const;
+  // `mean` with each far void's points filled under `tension`: the surface
+  // of the mirror-padded lattice, solved in a square around each void (the
+  // same bits for any thread count).
+  std::vector<double> tense_filled(const std::vector<double>& mean, const FarVoids& far, double tension,
+                                   const FillParams& params, const ProgressFn& progress, int threads) const;
+  // Sets value_ to the plain fill of `mean` and returns tense_filled: side
+  // by side on two threads for a small lattice, one after the other on
+  // `threads` threads each for a large one (`unknown` points).
+  std::vector<double> plain_and_tense(const std::vector<double>& mean, const FarVoids& far, std::size_t unknown,
+                                      const FillParams& params, const ProgressFn& progress, int threads);
   int width_ = 1, height_ = 1, stride_ = 1, cw_ = 1, ch_ = 1;
   std::vector<Moments> moments_;
   std::vector<double> value_;        // cw × ch after solve

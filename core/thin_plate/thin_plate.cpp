@@ -50,17 +50,9 @@
 
 namespace mcmd {
 
-namespace {
-
-// The least-squares plane through the constraint cells (the mean when they are
-// collinear). The thin-plate energy ignores planes, so working on z - plane
-// changes nothing in the limit, but makes every stage exact on planes and
-// keeps the numbers small (fill(z + c) = fill(z) + c up to rounding).
-struct Plane {
-  double c = 0.0, cx = 0.0, cy = 0.0, x0 = 0.0, y0 = 0.0;
-  double at(int x, int y) const { return c + cx * (x - x0) + cy * (y - y0); }
-};
-
+// The thin-plate energy ignores planes, so working on z - plane changes
+// nothing in the limit, but makes every stage exact on planes and keeps the
+// numbers small (fill(z + c) = fill(z) + c up to rounding).
 Plane constraint_plane(const FieldView& f) {
   // Counts and coordinate sums are integers (exact in any order); the sums of
   // elevations run in raster order. Non-constraint cells add +0.0, which
@@ -105,6 +97,8 @@ Plane constraint_plane(const FieldView& f) {
   }
   return p;
 }
+
+namespace {
 
 // Coarsest (2×2) first; levels.back() is the field, relative to `ref`.
 std::vector<Lattice> build_hierarchy(const FieldView& f, const Plane& ref) {
@@ -268,7 +262,7 @@ int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
 
 void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule, const ProgressFn& progress) {
   if (field.w < 1 || field.h < 1) return;
-  const Plane ref = constraint_plane(field);
+  const Plane ref = field.own_plane ? constraint_plane(field) : Plane{};
   std::vector<Lattice> levels = build_hierarchy(field, ref);
   const int finest = static_cast<int>(levels.size()) - 1;
   if (levels[finest].spans.empty()) return;

@@ -34,10 +34,25 @@ struct FieldView {
   // all of them). A void's field solves other voids' cells too; the roughness
   // is generated around the kept ones only (roughness.hpp).
   const std::uint8_t* wanted = nullptr;
+  // Whether the fill is solved around the constraints' least-squares plane
+  // (what a thin plate under tension levels off towards), or around 0: the
+  // caller has taken out a plane of its own (the coarse guide solving part
+  // of its lattice takes out the whole lattice's).
+  bool own_plane = true;
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + x; }
   double& z_at(int x, int y) const { return z[index(x, y)]; }
   CellState state_at(int x, int y) const { return state[index(x, y)]; }
 };
+
+// A plane c + cx·(x − x0) + cy·(y − y0) in field coordinates.
+struct Plane {
+  double c = 0.0, cx = 0.0, cy = 0.0, x0 = 0.0, y0 = 0.0;
+  double at(int x, int y) const { return c + cx * (x - x0) + cy * (y - y0); }
+};
+
+// The least-squares plane through the field's constraint cells (0 when it
+// has none; the line along them when they lie on one row or column).
+Plane constraint_plane(const FieldView& f);
 
 // The smooth fill of `field` (stages 1-3 of thin_plate.cpp, no roughness).
 // Pre: field.z and field.state hold w·h cells. Post: constraint cells

@@ -75,6 +75,30 @@ TEST(CoarseGuide, FarVoidLevelsOffWhileAnOrdinaryVoidKeepsTheThinPlate) {
   EXPECT_LT(top, known_top + 100.0);
 }
 
+// Each far void is solved under tension in a square of its own around it:
+// a valley whose two ends are void out to the raster's edges, each as steep
+// at its rim (16 m per cell, 3200 m high) as a plain thin plate would carry
+// 4.8 km on, levels off at both ends.
+TEST(CoarseGuide, EveryFarVoidLevelsOffInItsOwnSquare) {
+  const int w = 1400, h = 300;
+  std::vector<double> z(static_cast<std::size_t>(w) * h);
+  std::vector<std::uint8_t> valid(z.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      z[static_cast<std::size_t>(y) * w + x] = (x - 700.0) * (x - 700.0) / 50.0;
+      valid[static_cast<std::size_t>(y) * w + x] = x >= 300 && x < 1100;
+    }
+  mcmd::CoarseGuide g(w, h, mcmd::guide_stride(w, h));
+  g.add_rows(0, h, z.data(), valid.data());
+  ASSERT_TRUE(g.solve(mcmd::FillParams{}, {}, 1));
+  const double rim = 400.0 * 400.0 / 50.0;
+  for (int y = 0; y < h; y += 50)
+    for (int x : {0, 100, 1300, w - 1}) {
+      EXPECT_LT(g.at(x, y), rim + 300.0) << x << "," << y;
+      EXPECT_GT(g.at(x, y), rim - 1200.0) << x << "," << y;
+    }
+}
+
 // With two threads the plain and the tensioned surfaces are solved at the
 // same time: the guide must not change by a bit.
 TEST(CoarseGuide, TwoThreadsGiveTheSameGuide) {
