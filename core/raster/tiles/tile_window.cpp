@@ -202,6 +202,13 @@ double pin_to_guide(WindowCells& c, const PartDistance& dist, double radius, con
   return farthest;
 }
 
+// A window's conjugate gradients stop at a relative residual of 5e-2, not
+// the 1e-2 of a void solved whole: its outer ring and deep cells are pinned
+// to the guide, so what is left to converge is the detail near data. On the
+// blob mosaics (one thread) 7.0 iterations instead of 11.7 per unknown cell,
+// 11-12 % less time, RMSE +0.05 % (docs/tiling.md, Layout).
+constexpr double kWindowPcgTolerance = 5e-2;
+
 // The default method on `rect` of the window, in place.
 void fill_rect(WindowCells& c, const WindowRect& rect, const FillParams& params, double farthest,
                const ProgressFn& progress) {
@@ -214,8 +221,10 @@ void fill_rect(WindowCells& c, const WindowRect& rect, const FillParams& params,
     std::copy_n(c.state.begin() + from, w, state.begin() + to);
   }
   if (std::none_of(state.begin(), state.end(), [](CellState s) { return s == CellState::unknown; })) return;
+  ThinPlateSchedule schedule;
+  schedule.pcg_tol = kWindowPcgTolerance;
   thin_plate_with_roughness(FieldView{w, h, z.data(), state.data(), farthest}, c.span.x0 + rect.x0,
-                            c.span.y0 + rect.y0, params, ThinPlateSchedule{}, progress);
+                            c.span.y0 + rect.y0, params, schedule, progress);
   for (int v = 0; v < h; ++v)
     std::copy_n(z.begin() + std::ptrdiff_t{v} * w, w,
                 c.z.begin() + static_cast<std::ptrdiff_t>(c.index(rect.x0, rect.y0 + v)));
