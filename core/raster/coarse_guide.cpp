@@ -30,7 +30,12 @@ CoarseGuide::CoarseGuide(int width, int height, int stride)
   // interpolation inside the raster never needs the mirrored lattice.
   cw_ = (width - 1 + stride - 1) / stride + 1;
   ch_ = (height - 1 + stride - 1) / stride + 1;
-  moments_.assign(static_cast<std::size_t>(cw_) * ch_, Moments{});
+  open_.resize(static_cast<std::size_t>(ch_));
+  rows_left_.resize(static_cast<std::size_t>(ch_));
+  for (int j = 0; j < ch_; ++j)  // the raster rows of lattice row j's blocks
+    rows_left_[j] = std::min(height, j * stride - stride / 2 + stride) - std::max(0, j * stride - stride / 2);
+  mean_.assign(static_cast<std::size_t>(cw_) * ch_, 0.0);
+  known_.assign(mean_.size(), 0);
 }
 
 namespace {
@@ -83,8 +88,11 @@ void CoarseGuide::add_rows(int y0, int rows, const double* z, const std::uint8_t
   for (int r = 0; r < rows; ++r) {
     const int j = lattice_of(y0 + r, stride_);
     if (j >= ch_) continue;  // past the last lattice row's block
-    add_row_to_blocks(moments_.data() + static_cast<std::size_t>(j) * cw_, 0, cw_, stride_, width_, y0 + r, j,
-                      z + static_cast<std::size_t>(r) * width_, valid + static_cast<std::size_t>(r) * width_, 0);
+    std::vector<Moments>& sums = open_[j];
+    if (sums.empty()) sums.assign(static_cast<std::size_t>(cw_), Moments{});
+    add_row_to_blocks(sums.data(), 0, cw_, stride_, width_, y0 + r, j, z + static_cast<std::size_t>(r) * width_,
+                      valid + static_cast<std::size_t>(r) * width_, 0);
+    if (--rows_left_[j] == 0) close_row(j);
   }
 }
 
@@ -118,8 +126,9 @@ void CoarseGuide::set_moments(Range is, Range js, const std::vector<Moments>& pa
       part.size() != static_cast<std::size_t>(is.size()) * js.size())
     throw std::invalid_argument("set_moments: the part does not fit the lattice");
   for (int j = js.begin; j < js.end; ++j)
-    std::copy_n(part.data() + static_cast<std::size_t>(j - js.begin) * is.size(), is.size(),
-                moments_.data() + static_cast<std::size_t>(j) * cw_ + is.begin);
+    for (int i = is.begin; i < is.end; ++i)
+      set_point(static_cast<std::size_t>(j) * cw_ + i,
+                part[static_cast<std::size_t>(j - js.begin) * is.size() + (i - is.begin)]);
 }
 
 namespace {
@@ -138,6 +147,18 @@ double plane_at_lattice(double n, double z, double x, double y, double xx, doubl
   return mz - gx * mx - gy * my;
 }
 }  // namespace
+
+void CoarseGuide::set_point(std::size_t i, const Moments& m) {
+  if (m.n == 0) return;
+  mean_[i] = m.n == 1 ? m.z : plane_at_lattice(m.n, m.z, m.x, m.y, m.xx, m.yy, m.xy, m.zx, m.zy, stride_);
+  known_[i] = 1;
+}
+
+void CoarseGuide::close_row(int j) {
+  std::vector<Moments>& sums = open_[static_cast<std::size_t>(j)];
+  for (int i = 0; i < cw_ && !sums.empty(); ++i) set_point(static_cast<std::size_t>(j) * cw_ + i, sums[i]);
+  std::vector<Moments>().swap(sums);
+}
 
 // A pure thin plate extends the slopes at a void's edge linearly: fine across
 // a blob, but across a void hundreds or thousands of cells wide it builds
@@ -334,18 +355,10 @@ std::vector<double> CoarseGuide::plain_and_tense(const std::vector<double>& mean
 }
 
 bool CoarseGuide::solve(const FillParams& params, const ProgressFn& progress, int threads) {
-  std::vector<double> mean(moments_.size(), 0.0);
-  std::vector<std::uint8_t> known(moments_.size(), 0);
-  std::size_t known_count = 0;
-  for (std::size_t i = 0; i < moments_.size(); ++i) {
-    const Moments& m = moments_[i];
-    if (m.n == 0) continue;
-    mean[i] = m.n == 1 ? m.z : plane_at_lattice(m.n, m.z, m.x, m.y, m.xx, m.yy, m.xy, m.zx, m.zy, stride_);
-    known[i] = 1;
-    ++known_count;
-  }
-  moments_ = {};
-  known_ = known;
+  for (int j = 0; j < ch_; ++j) close_row(j);  // rows of blocks that did not get all their raster rows
+  const std::vector<double> mean = std::move(mean_);
+  mean_ = {};
+  const std::size_t known_count = static_cast<std::size_t>(std::count(known_.begin(), known_.end(), 1));
   if (known_count == 0) return false;
   value_ = mean;
   if (known_count < value_.size()) {

@@ -99,6 +99,34 @@ TEST(CoarseGuide, EveryFarVoidLevelsOffInItsOwnSquare) {
     }
 }
 
+// A lattice row's block sums are kept only until its raster rows have all
+// come. Rows in raster order, in chunks of any size, give the bits of every
+// block summed at once; rows in another order the same guide up to the
+// rounding of the sums.
+TEST(CoarseGuide, RowsInChunksOrAnyOrderGiveTheSameGuide) {
+  Raster r;
+  r.punch_disc(100, 150, 16);
+  r.punch_disc(500, 100, 60);
+  const auto add = [&r](mcmd::CoarseGuide& g, int first, int rows) {
+    g.add_rows(first, rows, r.z.data() + r.index(0, first), r.valid.data() + r.index(0, first));
+  };
+  mcmd::CoarseGuide whole(r.w, r.h, 4), chunks(r.w, r.h, 4), reversed(r.w, r.h, 4), parts(r.w, r.h, 4);
+  add(whole, 0, r.h);
+  for (int y0 = 0; y0 < r.h; y0 += 7) add(chunks, y0, std::min(7, r.h - y0));
+  for (int y0 = r.h - 7; y0 > -7; y0 -= 7) add(reversed, std::max(0, y0), y0 + 7 - std::max(0, y0));
+  // The sums of every block at once, as a fill split over workers sets them.
+  const mcmd::Range is{0, parts.lattice_width()}, js{0, parts.lattice_height()};
+  parts.set_moments(is, js,
+                    mcmd::CoarseGuide::part_moments(r.w, r.h, 4, is, js, {0, 0, r.w, r.h, r.z.data(), r.valid.data()}));
+  for (mcmd::CoarseGuide* g : {&whole, &chunks, &reversed, &parts}) ASSERT_TRUE(g->solve(mcmd::FillParams{}, {}, 1));
+  for (int y = 0; y < r.h; y += 2)
+    for (int x = 0; x < r.w; x += 2) {
+      ASSERT_EQ(whole.at(x, y), parts.at(x, y)) << x << "," << y;
+      ASSERT_EQ(whole.at(x, y), chunks.at(x, y)) << x << "," << y;
+      ASSERT_NEAR(whole.at(x, y), reversed.at(x, y), 1e-6) << x << "," << y;
+    }
+}
+
 // With two threads the plain and the tensioned surfaces are solved at the
 // same time: the guide must not change by a bit.
 TEST(CoarseGuide, TwoThreadsGiveTheSameGuide) {
