@@ -29,7 +29,6 @@ Blender::Strip& Blender::strip_for(int seam) {
 void Blender::add_to_strip(const WindowResult& r, int seam) {
   Strip& s = strip_for(seam);
   const Range rows = s.rows;
-  const TileAxis& ax = layout_.x;
   const TileAxis& ay = layout_.y;
   const int W = cols_.size();
   const int rw = r.xs.size();
@@ -44,8 +43,8 @@ void Blender::add_to_strip(const WindowResult& r, int seam) {
     for (int x = xa; x < xb; ++x) {
       const int i = x - r.xs.begin;
       const int k = x - cols_.begin;
-      sz[k] += (ax.weight(r.tx, x) * wy) * fz[i];
-      if (own_row && ax.owner(x) == r.tx) sm[k] = fm[i];
+      sz[k] += (wx_[i] * wy) * fz[i];
+      if (own_row && own_x_[i]) sm[k] = fm[i];
     }
   }
 }
@@ -75,8 +74,8 @@ void Blender::add_solo_rows(const WindowResult& r) {
         const int i = x - r.xs.begin;
         if (x < left.end) {  // left seam band: previous tile's share + ours
           const int pi = (y - rows.begin) * pending_.cols.size() + (x - left.begin);
-          const double mine = ax.weight(r.tx, x) * fz[i];
-          const bool own = ax.owner(x) == r.tx;
+          const double mine = wx_[i] * fz[i];
+          const bool own = own_x_[i] != 0;
           oz[i] = have_pending ? pending_.z[pi] + mine : mine;
           om[i] = own ? fm[i] : (have_pending ? pending_.mask[pi] : 0);
         } else {
@@ -100,14 +99,25 @@ void Blender::add_solo_rows(const WindowResult& r) {
     const std::uint8_t* fm = r.write.data() + static_cast<std::size_t>(y - r.ys.begin) * rw;
     for (int x = right.begin; x < right.end; ++x) {
       const std::size_t pi = static_cast<std::size_t>(y - rows.begin) * right.size() + (x - right.begin);
-      pending_.z[pi] = ax.weight(r.tx, x) * fz[x - r.xs.begin];
-      pending_.mask[pi] = ax.owner(x) == r.tx ? fm[x - r.xs.begin] : 0;
+      pending_.z[pi] = wx_[x - r.xs.begin] * fz[x - r.xs.begin];
+      pending_.mask[pi] = own_x_[x - r.xs.begin] ? fm[x - r.xs.begin] : 0;
     }
+  }
+}
+
+void Blender::columns_of(const WindowResult& r) {
+  const TileAxis& ax = layout_.x;
+  wx_.resize(static_cast<std::size_t>(r.xs.size()));
+  own_x_.resize(wx_.size());
+  for (int x = r.xs.begin; x < r.xs.end; ++x) {
+    wx_[x - r.xs.begin] = ax.weight(r.tx, x);
+    own_x_[x - r.xs.begin] = ax.owner(x) == r.tx;
   }
 }
 
 void Blender::add(const WindowResult& r) {
   const TileAxis& ay = layout_.y;
+  columns_of(r);
   if (r.ty > 0) add_to_strip(r, r.ty);
   add_solo_rows(r);
   if (r.ty + 1 < ay.count()) add_to_strip(r, r.ty + 1);

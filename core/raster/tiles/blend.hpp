@@ -67,6 +67,9 @@ class Blender {
   void add_solo_rows(const WindowResult& r);
   void flush_strip(Strip& s);
   void emit(int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask, int stride);
+  // wx_ and own_x_ for the columns of r (a quintic ramp and a division per
+  // column, not per cell).
+  void columns_of(const WindowResult& r);
 
   TileLayout layout_;
   BlockWriter write_;
@@ -75,6 +78,8 @@ class Blender {
   Pending pending_;
   std::vector<double> zbuf_;
   std::vector<std::uint8_t> mbuf_;
+  std::vector<double> wx_;          // per column of the current result: its x weight
+  std::vector<std::uint8_t> own_x_; // 1: the column is owned by its tile
 };
 
 }  // namespace mcmd
