@@ -160,14 +160,16 @@ Multigrid::Multigrid(const Lattice& finest, VCycleSchedule schedule) : schedule_
   const Lattice* fine = &finest;
   std::vector<Lattice> chain;
   while ((fine->w > 2 || fine->h > 2) && std::max(fine->w, fine->h) > schedule_.coarsest_side) {
-    chain.push_back(coarser_lattice(*fine, schedule_.coarse_pin));
     // The pull (one spring on every free cell) is part of each correction's
     // problem too: 4·Pᵀ(s·I)P ≈ 16·s·I on unit lattices, where the
     // fourth-order term only keeps its form. Without it a coarse correction
     // is too soft for the smooth modes the pull holds deep inside large voids
     // and overshoots: the 4801² blob mosaic took 8.1 CG iterations per
-    // unknown cell, 6.9 with it (docs/default-method.md, Multigrid).
-    if (fine->spring.empty()) chain.back().spring_all = 16.0 * fine->spring_all;
+    // unknown cell, 6.9 with it (docs/default-method.md, Multigrid). Read
+    // before push_back, which may move the lattice `fine` points to.
+    const double spring = fine->spring.empty() ? 16.0 * fine->spring_all : 0.0;
+    chain.push_back(coarser_lattice(*fine, schedule_.coarse_pin));
+    chain.back().spring_all = spring;
     fine = &chain.back();
   }
   // chain was built fine to coarse; index it coarse to fine.
