@@ -19,12 +19,13 @@ int levels_to_cover(int w, int h) {
   return n;
 }
 
-Grid mirror_padded_grid(const double* z, const std::uint8_t* valid, int w, int h, int n) {
+Grid mirror_padded_grid(const double* z, const std::uint8_t* valid, int w, int h, int n, int x0, int y0) {
   Grid g(n);
   for (int y = 0; y < g.side(); ++y) {
-    const std::size_t row = static_cast<std::size_t>(reflect_index(y, h)) * static_cast<std::size_t>(w);
+    const std::size_t row =
+        static_cast<std::size_t>(reflect_index(static_cast<long long>(y0) + y, h)) * static_cast<std::size_t>(w);
     for (int x = 0; x < g.side(); ++x) {
-      const std::size_t src = row + static_cast<std::size_t>(reflect_index(x, w));
+      const std::size_t src = row + static_cast<std::size_t>(reflect_index(static_cast<long long>(x0) + x, w));
       if (!valid[src]) continue;
       g.z(x, y) = z[src];
       g.state(x, y) = CellState::known;

@@ -20,8 +20,10 @@ inline int reflect_index(long long i, int len) {
 // Smallest n with 2^n + 1 >= max(w, h). Pre: w, h >= 1.
 int levels_to_cover(int w, int h);
 
-// A 2^n+1 grid whose cell (x, y) holds the raster cell reflected into range,
-// `known` where valid[...] != 0. Pre: n >= levels_to_cover(w, h).
-Grid mirror_padded_grid(const double* z, const std::uint8_t* valid, int w, int h, int n);
+// A 2^n+1 grid whose cell (x, y) holds raster cell (x0 + x, y0 + y)
+// reflected into range, `known` where valid[...] != 0. With the origin at 0
+// and n >= levels_to_cover(w, h) it covers the raster; another origin or a
+// smaller n gives a square window of the mirrored raster.
+Grid mirror_padded_grid(const double* z, const std::uint8_t* valid, int w, int h, int n, int x0 = 0, int y0 = 0);
 
 }  // namespace mcmd

@@ -156,7 +156,8 @@ void CoarseGuide::set_point(std::size_t i, const Moments& m) {
 
 void CoarseGuide::close_row(int j) {
   std::vector<Moments>& sums = open_[static_cast<std::size_t>(j)];
-  for (int i = 0; i < cw_ && !sums.empty(); ++i) set_point(static_cast<std::size_t>(j) * cw_ + i, sums[i]);
+  if (sums.empty()) return;  // closed already, or no raster row came
+  for (int i = 0; i < cw_; ++i) set_point(static_cast<std::size_t>(j) * cw_ + i, sums[i]);
   std::vector<Moments>().swap(sums);
 }
 
@@ -294,15 +295,12 @@ std::vector<double> CoarseGuide::tense_filled(const std::vector<double>& mean, c
   for (std::size_t k = 0; k < far.boxes.size(); ++k) {
     const LatticeBox& v = far.boxes[k];
     const int x0 = std::max(0, v.x0 - margin), y0 = std::max(0, v.y0 - margin);
-    Grid g(levels_to_cover(std::min(cw_, v.x1 + margin) - x0, std::min(ch_, v.y1 + margin) - y0));
+    Grid g = mirror_padded_grid(mean.data(), known_.data(), cw_, ch_,
+                                levels_to_cover(std::min(cw_, v.x1 + margin) - x0, std::min(ch_, v.y1 + margin) - y0),
+                                x0, y0);
     for (int j = 0; j < g.side(); ++j)
-      for (int i = 0; i < g.side(); ++i) {
-        const std::size_t from =
-            static_cast<std::size_t>(reflect_index(y0 + j, ch_)) * cw_ + reflect_index(x0 + i, cw_);
-        if (!known_[from]) continue;
-        g.z(i, j) = mean[from] - plane.at(x0 + i, y0 + j);
-        g.state(i, j) = CellState::known;
-      }
+      for (int i = 0; i < g.side(); ++i)
+        if (g.state(i, j) == CellState::known) g.z(i, j) -= plane.at(x0 + i, y0 + j);
     FieldView field{g.side(), g.side(), g.elevations().data(), g.states().data()};
     field.own_plane = false;
     const double n = static_cast<double>(far.boxes.size());

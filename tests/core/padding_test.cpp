@@ -30,3 +30,13 @@ TEST(Padding, MirroredGridKeepsValuesAndStates) {
   EXPECT_EQ(g.z(0, 2), 1);  // y = 2 reflects to 0
   EXPECT_EQ(g.state(4, 0), CellState::known);
 }
+
+TEST(Padding, MirroredWindowStartsAtItsOrigin) {
+  const std::vector<double> z{1, 2, 3, 4, 5, 6};  // 3 wide, 2 high
+  const std::vector<std::uint8_t> valid{1, 1, 0, 1, 1, 1};
+  Grid g = mirror_padded_grid(z.data(), valid.data(), 3, 2, 1, 2, 1);  // 3×3 from cell (2, 1)
+  EXPECT_EQ(g.z(0, 0), 6);  // (2, 1)
+  EXPECT_EQ(g.z(1, 0), 5);  // x = 3 reflects to 1
+  EXPECT_EQ(g.state(0, 1), CellState::unknown);  // (2, 2) reflects to (2, 0): void
+  EXPECT_EQ(g.z(2, 2), 4);  // (4, 3) reflects to (0, 1)
+}
