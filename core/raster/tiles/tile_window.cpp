@@ -54,25 +54,26 @@ struct WindowCells {
   std::size_t index(int u, int v) const { return static_cast<std::size_t>(v) * span.w + u; }
 };
 
-WindowCells load_window(const TileLayout& layout, const WindowInput& in, Method method) {
+// The cells of `span` (part of the window, or all of it).
+WindowCells load_window(const TileLayout& layout, const WindowInput& in, const WindowSpan& span) {
   WindowCells c;
-  c.span = window_span(layout, in.tx, in.ty, method);
+  c.span = span;
   c.mx = reflected(c.span.x0, c.span.w, layout.x.length());
   c.my = reflected(c.span.y0, c.span.h, layout.y.length());
   const std::size_t cells = static_cast<std::size_t>(c.span.w) * c.span.h;
-  c.z.assign(cells, 0.0);
-  c.state.assign(cells, CellState::unknown);
-  c.known.assign(cells, 0);
+  c.z.resize(cells);
+  c.state.resize(cells);
+  c.known.resize(cells);
   const std::size_t rw = static_cast<std::size_t>(in.rect.w);
   for (int v = 0; v < c.span.h; ++v) {
     const std::size_t row = static_cast<std::size_t>(c.my[v] - in.rect.y0) * rw;
+    const std::size_t i = c.index(0, v);
     for (int u = 0; u < c.span.w; ++u) {
       const std::size_t src = row + static_cast<std::size_t>(c.mx[u] - in.rect.x0);
-      if (!in.valid[src]) continue;
-      const std::size_t i = c.index(u, v);
-      c.z[i] = in.z[src];
-      c.state[i] = CellState::known;
-      c.known[i] = 1;
+      const bool known = in.valid[src] != 0;
+      c.z[i + u] = known ? in.z[src] : 0.0;
+      c.state[i + u] = known ? CellState::known : CellState::unknown;
+      c.known[i + u] = known;
     }
   }
   return c;
@@ -132,23 +133,44 @@ detail::Box written_box(const TileLayout& layout, const WindowInput& in, const s
 // cell keeps a band of context. A window that a large void only grazes then
 // solves the part it fills, not its whole region. Empty when nothing is
 // written.
-WindowRect focus(const WindowCells& c, const TileLayout& layout, const detail::Box& written, const WindowRect& rect) {
+WindowRect focus(const WindowSpan& span, const TileLayout& layout, const detail::Box& written, const WindowRect& rect) {
   if (written.x1 < written.x0) return WindowRect{};
   const int bx = layout.x.band(), by = layout.y.band();
-  return WindowRect{std::max(rect.x0, snap_down(written.x0 - bx) - c.span.x0),
-                    std::max(rect.y0, snap_down(written.y0 - by) - c.span.y0),
-                    std::min(rect.x1, snap_up(written.x1 + bx + 1) - c.span.x0),
-                    std::min(rect.y1, snap_up(written.y1 + by + 1) - c.span.y0)};
+  return WindowRect{std::max(rect.x0, snap_down(written.x0 - bx) - span.x0),
+                    std::max(rect.y0, snap_down(written.y0 - by) - span.y0),
+                    std::min(rect.x1, snap_up(written.x1 + bx + 1) - span.x0),
+                    std::min(rect.y1, snap_up(written.y1 + by + 1) - span.y0)};
 }
 
-// The output region's void cells, less those of `alone` (may be null).
-std::vector<std::uint8_t> voids_to_write(const WindowCells& c, const TileLayout& layout, const WindowInput& in,
+// How far beyond a solved rectangle its distances to known cells look
+// (distance_to_valid_near's part for `reach`).
+int distance_reach(double reach) { return static_cast<int>(std::ceil(reach)) + 1; }
+
+// The part of `full` within `by` cells of `rect` (window cells of `full`).
+WindowSpan around(const WindowSpan& full, const WindowRect& rect, int by) {
+  const int x0 = std::max(0, rect.x0 - by), y0 = std::max(0, rect.y0 - by);
+  const int x1 = std::min(full.w, rect.x1 + by), y1 = std::min(full.h, rect.y1 + by);
+  return WindowSpan{full.x0 + x0, full.y0 + y0, x1 - x0, y1 - y0};
+}
+
+// `rect`, in window cells of `full`, in those of its part `part`.
+WindowRect shifted(const WindowRect& rect, const WindowSpan& full, const WindowSpan& part) {
+  const int dx = part.x0 - full.x0, dy = part.y0 - full.y0;
+  return WindowRect{rect.x0 - dx, rect.y0 - dy, rect.x1 - dx, rect.y1 - dy};
+}
+
+// The output region's void cells (read from the input: the region lies in
+// the raster), less those of `alone` (may be null).
+std::vector<std::uint8_t> voids_to_write(const TileLayout& layout, const WindowInput& in,
                                          const detail::RunsByRow* alone) {
   const Range rx = layout.x.region(in.tx), ry = layout.y.region(in.ty);
   std::vector<std::uint8_t> write(static_cast<std::size_t>(rx.size()) * ry.size());
   std::size_t k = 0;
-  for (int y = ry.begin; y < ry.end; ++y)
-    for (int x = rx.begin; x < rx.end; ++x, ++k) write[k] = c.known[c.index(x - c.span.x0, y - c.span.y0)] ? 0 : 1;
+  for (int y = ry.begin; y < ry.end; ++y) {
+    const std::uint8_t* valid =
+        in.valid.data() + static_cast<std::size_t>(y - in.rect.y0) * in.rect.w + (rx.begin - in.rect.x0);
+    for (int x = 0; x < rx.size(); ++x, ++k) write[k] = valid[x] ? 0 : 1;
+  }
   if (alone) alone->clear(rx.begin, ry.begin, rx.size(), ry.size(), write.data());
   return write;
 }
@@ -279,16 +301,25 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
   const bool region = solves_region(layout, params.method);
   const bool guided = guide && guide->ready();
   if (region && !guided) throw std::logic_error("a tiled window of the default method needs the guide");
-  WindowCells c = load_window(layout, in, params.method);
-  std::vector<std::uint8_t> write = voids_to_write(c, layout, in, solved_alone);
+  const WindowSpan full = window_span(layout, in.tx, in.ty, params.method);
+  std::vector<std::uint8_t> write = voids_to_write(layout, in, solved_alone);
   const detail::Box written = written_box(layout, in, write);
   const int band = layout.x.band();
-  const WindowRect whole{0, 0, c.span.w, c.span.h};
-  WindowRect rect = region ? focus(c, layout, written, solved_rect(layout, in, c.span, band)) : whole;
-
+  const WindowRect whole{0, 0, full.w, full.h};
+  WindowRect rect = region ? focus(full, layout, written, solved_rect(layout, in, full, band)) : whole;
   const double radius = guided ? guide_radius(layout, *guide) : 0.0;
-  PartDistance dist;  // to the nearest known cell of the window
   const bool idle = region && (rect.w() <= 0 || rect.h() <= 0);  // nothing to write
+  // Loaded: with -md (the written cells' distances over the whole window)
+  // or a whole-window solve all of it; else what is solved and the cells
+  // within the guide radius of it, all that its distances see (on the 4801²
+  // blob mosaic a third of the window).
+  const WindowSpan span = idle                              ? WindowSpan{full.x0, full.y0, 0, 0}
+                          : region && max_distance <= 0 ? around(full, rect, distance_reach(radius))
+                                                          : full;
+  WindowCells c = load_window(layout, in, span);
+  rect = shifted(rect, full, span);
+
+  PartDistance dist;  // to the nearest known cell of the window
   if (!idle) {
     double farthest = -1.0;  // a bound on dist over rect
     // Scattered samples: every cell near data, so none is pinned to the guide
@@ -296,7 +327,8 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
     if (region && max_distance <= 0)
       farthest = near_bound(c, rect, std::min(radius, ThinPlateSchedule{}.shallow_reach));
     if (farthest >= 0)  // shallow: less context (the bound holds on the smaller rect)
-      rect = focus(c, layout, written, solved_rect(layout, in, c.span, std::min(band, kShallowContext)));
+      rect = shifted(focus(full, layout, written, solved_rect(layout, in, full, std::min(band, kShallowContext))), full,
+                     span);
     // Exact over the whole window with -md (the written cells' distances
     // decide what is written); else only the guide radius matters.
     if ((guided || max_distance > 0) && farthest < 0)
@@ -321,15 +353,19 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
   r.z.resize(cells);
   r.write = std::move(write);
   const bool beyond_window = guided && max_distance > exact_distance_limit(layout);
+  // Cells outside what was loaded are written by no window (0 there).
+  const int xa = std::max(r.xs.begin, c.span.x0), xb = std::min(r.xs.end, c.span.x0 + c.span.w);
+  for (int y = std::max(r.ys.begin, c.span.y0); y < std::min(r.ys.end, c.span.y0 + c.span.h); ++y)
+    if (xa < xb)
+      std::copy_n(c.z.begin() + static_cast<std::ptrdiff_t>(c.index(xa - c.span.x0, y - c.span.y0)), xb - xa,
+                  r.z.begin() + static_cast<std::ptrdiff_t>(y - r.ys.begin) * r.xs.size() + (xa - r.xs.begin));
+  if (max_distance <= 0) return r;
   std::size_t k = 0;
   for (int y = r.ys.begin; y < r.ys.end; ++y)
-    for (int x = r.xs.begin; x < r.xs.end; ++x, ++k) {
-      const std::size_t i = c.index(x - c.span.x0, y - c.span.y0);
-      r.z[k] = c.z[i];
+    for (int x = r.xs.begin; x < r.xs.end; ++x, ++k)
       // Beyond what the window sees, the guide's coarse distance decides.
-      if (r.write[k] && max_distance > 0 && !within_fill_distance(dist.at(x - c.span.x0, y - c.span.y0), max_distance))
+      if (r.write[k] && !within_fill_distance(dist.at(x - c.span.x0, y - c.span.y0), max_distance))
         r.write[k] = beyond_window && within_fill_distance(guide->coarse_distance(x, y), max_distance) ? 1 : 0;
-    }
   return r;
 }
 
