@@ -486,9 +486,10 @@ TEST(TiledFill, SmallVoidIsSolvedAloneWhateverTheTiles) {
   EXPECT_TRUE(bit_identical(a, b));
   EXPECT_TRUE(bit_identical(a, c));
 
-  // The same values as mcmd::fill on the component's grid: side 2^k+1 >= box
-  // side + 2·8, centred on the box (13×13 box -> 33² grid at 128 - 16). No
-  // cell is farther than the guide radius (8 here) from data: no guide pin.
+  // The same values as the default method on the component's grid, to a
+  // window's tolerance: side 2^k+1 >= box side + 2·8, centred on the box
+  // (13×13 box -> 33² grid at 128 - 16). No cell is farther than the guide
+  // radius (8 here) from data: no guide pin.
   Grid g(5, 128 - 16, 128 - 16);
   for (int v = 0; v < g.side(); ++v)
     for (int u = 0; u < g.side(); ++u) {
@@ -501,7 +502,9 @@ TEST(TiledFill, SmallVoidIsSolvedAloneWhateverTheTiles) {
   for (std::size_t i = 0; i < r.z.size(); ++i)
     if (r.valid[i]) lo = std::min(lo, r.z[i]), hi = std::max(hi, r.z[i]);
   p.noise_unit = hi - lo;
-  fill_grid(g, p);
+  ThinPlateSchedule pinned;
+  pinned.pcg_tol = kPinnedPcgTolerance;
+  thin_plate_fill_scheduled(g, p, pinned);
   for (int v = 0; v < g.side(); ++v)
     for (int u = 0; u < g.side(); ++u) {
       const std::size_t i = r.at(g.origin_x() + u, g.origin_y() + v);

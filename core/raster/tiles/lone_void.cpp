@@ -6,7 +6,8 @@
 
 #include "common/distance.hpp"
 #include "common/padding.hpp"
-#include "method/fill_grid.hpp"
+#include "thin_plate/schedule.hpp"
+#include "thin_plate/thin_plate.hpp"
 
 namespace mcmd::detail {
 
@@ -105,7 +106,11 @@ std::vector<double> solve_component(const SmallComponent& c, const ComponentGrid
     }
   }
   morph::place_line_cells(grid, lines);
-  fill_grid(grid, params, progress);
+  // The default method (the only one solving small voids alone), pinned as
+  // a window is.
+  ThinPlateSchedule schedule;
+  schedule.pcg_tol = kPinnedPcgTolerance;
+  thin_plate_fill_scheduled(grid, params, schedule, progress);
 
   std::vector<double> out;
   for (const VoidRun& r : c.runs)

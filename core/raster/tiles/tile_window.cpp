@@ -224,13 +224,6 @@ double pin_to_guide(WindowCells& c, const PartDistance& dist, double radius, con
   return farthest;
 }
 
-// A window's conjugate gradients stop at a relative residual of 5e-2, not
-// the 1e-2 of a void solved whole: its outer ring and deep cells are pinned
-// to the guide, so what is left to converge is the detail near data. On the
-// blob mosaics (one thread) 7.0 iterations instead of 11.7 per unknown cell,
-// 11-12 % less time, RMSE +0.05 % (docs/tiling.md, Layout).
-constexpr double kWindowPcgTolerance = 5e-2;
-
 // The default method on `rect` of the window, in place.
 void fill_rect(WindowCells& c, const WindowRect& rect, const FillParams& params, double farthest,
                const ProgressFn& progress) {
@@ -244,7 +237,7 @@ void fill_rect(WindowCells& c, const WindowRect& rect, const FillParams& params,
   }
   if (std::none_of(state.begin(), state.end(), [](CellState s) { return s == CellState::unknown; })) return;
   ThinPlateSchedule schedule;
-  schedule.pcg_tol = kWindowPcgTolerance;
+  schedule.pcg_tol = kPinnedPcgTolerance;
   thin_plate_with_roughness(FieldView{w, h, z.data(), state.data(), farthest}, c.span.x0 + rect.x0,
                             c.span.y0 + rect.y0, params, schedule, progress);
   for (int v = 0; v < h; ++v)
