@@ -27,6 +27,7 @@ std::vector<NoiseMoments> noise_moments(const RoughField& g, const Area& a, cons
       const int x0 = std::max(1, b.x0(bi)), n_x = std::min(b.x1(bi, g.w), g.w - 1) - x0;
       NoiseMoments m;
       for (int y = std::max(1, b.y0(bj)); y < std::min(b.y1(bj, g.h), g.h - 1); ++y) {
+        if ((g.y0 + y) & 2) continue;  // raster rows 0 and 1 mod 4 only (bits: also below 0)
         const double* v = noise.data() + a.index(x0, y);
         const std::uint8_t* t = target.data() + a.index(x0, y);
         if (!std::memchr(t, 1, static_cast<std::size_t>(std::max(0, n_x)))) continue;  // adds 0: a small void's rows
