@@ -114,9 +114,11 @@ void scale_noise(const Area& a, const Blocks& blocks, const std::vector<double>&
           const int ci = static_cast<int>(floor_of((x0 + blocks.ox + 0.5) / kBlock - 0.5));
           const int x1 = std::min(r.x1, (ci + 1) * kBlock + kBlock / 2 - blocks.ox);  // the next centre
           const double s00 = at(ci, cj), s10 = at(ci + 1, cj), s01 = at(ci, cj + 1), s11 = at(ci + 1, cj + 1);
+          // Bilinear, linear in tx along the run: f = left + tx · slope.
+          const double left = (1 - ty) * s00 + ty * s01, slope = (1 - ty) * (s10 - s00) + ty * (s11 - s01);
           for (int x = x0; x < x1; ++x) {
             const double tx = (x + blocks.ox + 0.5) / kBlock - 0.5 - ci;
-            const double f = (1 - ty) * ((1 - tx) * s00 + tx * s10) + ty * ((1 - tx) * s01 + tx * s11);
+            const double f = left + tx * slope;
             double& v = row[x - a.x0];
             v = v == 0.0 ? v : v * f;  // 0 where there is no noise (even if f is not finite)
           }
