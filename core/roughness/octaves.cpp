@@ -131,14 +131,16 @@ void add_interpolated(const OctaveCells& c, Samples& s, std::vector<double>& scr
       arow[i] = (gx & 1) == 0 ? srow[k] : cubic_mid(srow[k - 1], srow[k], srow[k + 1], srow[k + 2]);
     }
   }
+  // Rows by parity, cells by a select (+0.0 off the mask: those cells hold
+  // +0.0 and keep it), so that the loops vectorise.
   for (long long gy = c.gy0; gy < c.gy1; ++gy) {
     const std::uint8_t* m = c.mask_row(gy);
     double* o = c.out_row(gy);
     const double* a1 = across + static_cast<std::size_t>(floor_half(gy) - s.sy.k0) * w;
-    for (int i = 0; i < w; ++i) {
-      if (!m[i]) continue;
-      o[i] += (gy & 1) == 0 ? a1[i] : cubic_mid(a1[i - w], a1[i], a1[i + w], a1[i + 2 * w]);
-    }
+    if ((gy & 1) == 0)
+      for (int i = 0; i < w; ++i) o[i] += m[i] ? a1[i] : 0.0;
+    else
+      for (int i = 0; i < w; ++i) o[i] += m[i] ? cubic_mid(a1[i - w], a1[i], a1[i + w], a1[i + 2 * w]) : 0.0;
   }
 }
 
