@@ -138,9 +138,11 @@ bool all_within_chebyshev(const std::uint8_t* valid, int w, int h, int r) {
   return std::all_of(near.begin(), near.end(), [](std::uint8_t v) { return v != 0; });
 }
 
+int near_margin(double reach) { return static_cast<int>(std::ceil(reach)) + 1; }
+
 PartDistance distance_to_valid_near(const std::uint8_t* valid, int w, int h, int x0, int y0, int x1, int y1,
                                     double reach) {
-  const int g = static_cast<int>(std::ceil(reach)) + 1;
+  const int g = near_margin(reach);
   PartDistance p;
   p.x0 = std::max(0, x0 - g);
   p.y0 = std::max(0, y0 - g);

@@ -34,6 +34,8 @@ struct PartDistance {
   bool empty() const { return d.empty(); }
   double at(int x, int y) const { return d[static_cast<std::size_t>(y - y0) * w + (x - x0)]; }
 };
+// The part's margin around the rectangle for `reach`: ceil(reach) + 1.
+int near_margin(double reach);
 // Pre: the rectangle lies in the raster, reach >= 0.
 PartDistance distance_to_valid_near(const std::uint8_t* valid, int w, int h, int x0, int y0, int x1, int y1,
                                     double reach);

@@ -142,10 +142,6 @@ WindowRect focus(const WindowSpan& span, const TileLayout& layout, const detail:
                     std::min(rect.y1, snap_up(written.y1 + by + 1) - span.y0)};
 }
 
-// How far beyond a solved rectangle its distances to known cells look
-// (distance_to_valid_near's part for `reach`).
-int distance_reach(double reach) { return static_cast<int>(std::ceil(reach)) + 1; }
-
 // The part of `full` within `by` cells of `rect` (window cells of `full`).
 WindowSpan around(const WindowSpan& full, const WindowRect& rect, int by) {
   const int x0 = std::max(0, rect.x0 - by), y0 = std::max(0, rect.y0 - by);
@@ -306,9 +302,11 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
   // or a whole-window solve all of it; else what is solved and the cells
   // within the guide radius of it, all that its distances see (on the 4801²
   // blob mosaic a third of the window).
-  const WindowSpan span = idle                              ? WindowSpan{full.x0, full.y0, 0, 0}
-                          : region && max_distance <= 0 ? around(full, rect, distance_reach(radius))
-                                                          : full;
+  WindowSpan span = full;
+  if (idle)
+    span = WindowSpan{full.x0, full.y0, 0, 0};
+  else if (region && max_distance <= 0)
+    span = around(full, rect, near_margin(radius));
   WindowCells c = load_window(layout, in, span);
   rect = shifted(rect, full, span);
 
@@ -346,7 +344,8 @@ WindowResult solve_window(const TileLayout& layout, const WindowInput& in, const
   r.z.resize(cells);
   r.write = std::move(write);
   const bool beyond_window = guided && max_distance > exact_distance_limit(layout);
-  // Cells outside what was loaded are written by no window (0 there).
+  // Every cell this window writes lies in what it solved, so inside what it
+  // loaded; the others are 0 (the blend uses a window's cells where it writes).
   const int xa = std::max(r.xs.begin, c.span.x0), xb = std::min(r.xs.end, c.span.x0 + c.span.w);
   for (int y = std::max(r.ys.begin, c.span.y0); y < std::min(r.ys.end, c.span.y0 + c.span.h); ++y)
     if (xa < xb)
