@@ -144,15 +144,47 @@ void add_interpolated(const OctaveCells& c, Samples& s, std::vector<double>& scr
   }
 }
 
-// One octave's noise, times `weight`, added to `cells` (spacing 1) or to
-// `samples` (interpolated later): white noise on a lattice of spacing 2^j,
+// The buffers of one thread's octaves, reused from box to box.
+struct OctaveBuffers {
+  std::vector<double> node;           // a box's lattice nodes
+  std::vector<std::uint64_t> column;  // the hash's first step, per column of nodes
+  std::vector<std::uint32_t> keys;    // the cell hash's column keys
+  std::vector<double> scratch;
+};
+
+// The octave of spacing 1, times `weight`, added at the masked cells: every
+// cell is a node, the spline its value, uniform from a 32-bit hash (the
+// 64-bit one cost 40 instructions a cell, on up to every cell of a raster).
+MCMD_AVX2_CLONES
+void add_cell_octave(std::uint64_t seed, double weight, const OctaveCells& cells, std::vector<std::uint32_t>& keys,
+                     std::vector<double>& values) {
+  const CellHash32 hash(seed * 0x9E3779B97F4A7C15ull + 1);
+  const int w = cells.width();
+  keys.resize(static_cast<std::size_t>(w));
+  values.resize(static_cast<std::size_t>(w));
+  double* v = values.data();
+  for (int i = 0; i < w; ++i) keys[i] = hash.column(cells.gx0 + i);
+  const double unit = weight * std::sqrt(3.0) * 0x1p-31;  // uniform in [-√3, √3): unit variance
+  for (long long gy = cells.gy0; gy < cells.gy1; ++gy) {
+    const std::uint8_t* m = cells.mask_row(gy);
+    double* o = cells.out_row(gy);
+    const std::uint32_t row = hash.row(gy);
+    const std::uint32_t* k = keys.data();
+    for (int i = 0; i < w; ++i) v[i] = unit * static_cast<double>(static_cast<std::int32_t>(CellHash32::at(k[i], row)));
+    for (int i = 0; i < w; ++i) o[i] += m[i] ? v[i] : 0.0;  // +0.0 off the mask: a select that vectorises
+  }
+}
+
+// One octave's noise, times `weight`, added to `cells` (spacing 1,
+// add_cell_octave) or to `samples` (interpolated later): white noise on a
+// lattice of spacing 2^j,
 // rotated by j golden angles from spacing 4 on, interpolated with
 // Catmull-Rom splines. The nodes are a function of global coordinates, so
 // any window, field or block sees the same value at a cell (the samples
 // too: even raster coordinates). The AVX2 clone takes 4 cells per
 // instruction where the baseline takes 2: the noise's time on White
 // Mountains blobs fell by 16 %.
-// `node`, `column` and `scratch` are buffers reused by the caller.
+// `b` holds buffers reused by the caller.
 // Every lambda below that takes or returns a Quad is always inlined: a lambda
 // is not cloned with the function around it, so one compiled out of line (as
 // GCC did in the sanitizer build) had the baseline ABI while the AVX2 clone
@@ -160,7 +192,11 @@ void add_interpolated(const OctaveCells& c, Samples& s, std::vector<double>& scr
 // offsets far outside `node`.
 MCMD_AVX2_CLONES
 void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cells, Samples& samples,
-                std::vector<double>& node, std::vector<std::uint64_t>& column, std::vector<double>& scratch) {
+                OctaveBuffers& b) {
+  if (j == 0) return add_cell_octave(seed, weight, cells, b.keys, b.scratch);
+  std::vector<double>& node = b.node;
+  std::vector<double>& scratch = b.scratch;
+  std::vector<std::uint64_t>& column = b.column;
   const double s = std::ldexp(1.0, j);
   const double c = std::cos(j * kGolden) / s, sn = std::sin(j * kGolden) / s;
   const double ox = 0.618 * j, oy = 0.382 * j;
@@ -170,17 +206,6 @@ void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cel
     v = -sn * x + c * y + oy;
   };
   const UniformHash hash(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1));
-  if (j == 0) {  // unrotated, unit spacing: every cell is a node, the spline its value
-    column.resize(static_cast<std::size_t>(cells.width()));
-    for (int i = 0; i < cells.width(); ++i) column[i] = hash.column(cells.gx0 + i);
-    for (long long gy = cells.gy0; gy < cells.gy1; ++gy) {
-      const std::uint8_t* m = cells.mask_row(gy);
-      double* o = cells.out_row(gy);
-      for (int i = 0; i < cells.width(); ++i)
-        if (m[i]) o[i] += weight * node_value(column[i], gy);
-    }
-    return;
-  }
   if (j == 1) {  // unrotated, spacing 2: every sample is a node, the spline its value
     column.resize(static_cast<std::size_t>(samples.columns()));
     for (int k = 0; k < samples.columns(); ++k) column[k] = hash.column(samples.sx.k0 + k);
@@ -254,26 +279,32 @@ void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cel
 
 }  // namespace
 
-// The noise, octave j weighted 2^(jH), added to `out` (over area `a`) at the
-// cells of `mask`, block by block (active blocks only, over their noise box:
-// the coarse octaves' nodes cover the box), block rows on
-// `threads` threads (a lone field's noise, e.g. 3 % kept cells: each cell is
-// written by one block, the same bits for any count).
+// The noise over runs of neighbouring active blocks of a block row, one box
+// (the union of theirs) at a time: the octaves' samples and nodes reach 3
+// samples beyond a box, and over a run that margin is paid once, not per
+// block. A cell's value is a function of its raster coordinates only, so it
+// is the same whatever box it is made in: runs change the work, not the bits.
 void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const std::vector<std::uint8_t>& mask,
                std::uint64_t seed, double H, int octaves, std::vector<double>& out, int threads) {
 #pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
   for (int bj = 0; bj < blocks.ny; ++bj) {
-    std::vector<double> node, scratch;
-    std::vector<std::uint64_t> column;  // the hash's first step, per column of cells or nodes
+    OctaveBuffers buffers;
     Samples samples;
-    for (int bi = 0; bi < blocks.nx; ++bi) {
-      if (!blocks.active(bi, bj)) continue;
-      const Rect& r = blocks.noise_box[blocks.index(bi, bj)];
+    for (int bi = 0; bi < blocks.nx;) {
+      if (!blocks.active(bi, bj)) {
+        ++bi;
+        continue;
+      }
+      Rect r = blocks.noise_box[blocks.index(bi, bj)];
+      for (++bi; bi < blocks.nx && blocks.active(bi, bj); ++bi) {
+        const Rect& next = blocks.noise_box[blocks.index(bi, bj)];
+        r = Rect{r.x0, next.x1, std::min(r.y0, next.y0), std::max(r.y1, next.y1)};
+      }
       const OctaveCells cells{g.x0 + r.x0, g.x0 + r.x1, g.y0 + r.y0, g.y0 + r.y1, mask.data() + a.index(r.x0, r.y0),
                               out.data() + a.index(r.x0, r.y0), a.w};
       if (octaves > 1) samples.reset(cells);  // spacings of 2 and more are summed there
-      for (int j = 0; j < octaves; ++j) add_octave(seed, j, std::exp2(j * H), cells, samples, node, column, scratch);
-      if (octaves > 1) add_interpolated(cells, samples, scratch);
+      for (int j = 0; j < octaves; ++j) add_octave(seed, j, std::exp2(j * H), cells, samples, buffers);
+      if (octaves > 1) add_interpolated(cells, samples, buffers.scratch);
     }
   }
 }

@@ -14,10 +14,10 @@ namespace mcmd::rough {
 constexpr int kOctaves = 6;         // spacings 1 .. 32 cells
 
 // The noise, octave j weighted 2^(jH), added to `out` (over area `a`) at the
-// cells of `mask`, block by block (active blocks only, over their noise box:
-// the coarse octaves' nodes cover the box), block rows on
-// `threads` threads (a lone field's noise, e.g. 3 % kept cells: each cell is
-// written by one block, the same bits for any count).
+// cells of `mask`, over the active blocks' noise boxes (the union of a run of
+// neighbouring ones at a time), block rows on `threads` threads (a lone
+// field's noise, e.g. 3 % kept cells: each cell is written by one block row,
+// the same bits for any count). Every mask cell must lie in its block's box.
 void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const std::vector<std::uint8_t>& mask,
                std::uint64_t seed, double H, int octaves, std::vector<double>& out, int threads);
 
