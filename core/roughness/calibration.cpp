@@ -95,8 +95,11 @@ std::vector<double> block_scales(const Blocks& blocks, const LagTable& lags, con
 // active blocks' noise boxes only.
 void scale_noise(const Area& a, const Blocks& blocks, const std::vector<double>& scales, std::vector<double>& noise,
                  int threads) {
+  // A scale that is not finite (no noise there to measure) counts as 0, so
+  // that v · f is 0 where v is: no test per cell, and the loop vectorises.
   const auto at = [&](int bi, int bj) {
-    return scales[blocks.index(std::clamp(bi, 0, blocks.nx - 1), std::clamp(bj, 0, blocks.ny - 1))];
+    const double s = scales[blocks.index(std::clamp(bi, 0, blocks.nx - 1), std::clamp(bj, 0, blocks.ny - 1))];
+    return std::isfinite(s) ? s : 0.0;
   };
 #pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
   for (int bj = 0; bj < blocks.ny; ++bj)
@@ -118,9 +121,7 @@ void scale_noise(const Area& a, const Blocks& blocks, const std::vector<double>&
           const double left = (1 - ty) * s00 + ty * s01, slope = (1 - ty) * (s10 - s00) + ty * (s11 - s01);
           for (int x = x0; x < x1; ++x) {
             const double tx = (x + blocks.ox + 0.5) / kBlock - 0.5 - ci;
-            const double f = left + tx * slope;
-            double& v = row[x - a.x0];
-            v = v == 0.0 ? v : v * f;  // 0 where there is no noise (even if f is not finite)
+            row[x - a.x0] *= left + tx * slope;  // f >= 0: +0.0 where there is no noise stays +0.0
           }
           x0 = x1;
         }
