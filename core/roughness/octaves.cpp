@@ -178,9 +178,9 @@ void add_cell_octave(std::uint64_t seed, double weight, const OctaveCells& cells
 // One octave's noise, times `weight`, added to `cells` (spacing 1,
 // add_cell_octave) or to `samples` (interpolated later): white noise on a
 // lattice of spacing 2^j, rotated by j golden angles from spacing 4 on,
-// interpolated with Catmull-Rom splines. The nodes are a function of global coordinates, so
-// any window, field or block sees the same value at a cell (the samples
-// too: even raster coordinates). The AVX2 clone takes 4 cells per
+// interpolated with Catmull-Rom splines. The nodes are a function of global
+// coordinates, so any window, field or block sees the same value at a cell
+// (the samples too: even raster coordinates). The AVX2 clone takes 4 cells per
 // instruction where the baseline takes 2: the noise's time on White
 // Mountains blobs fell by 16 %.
 // `b` holds buffers reused by the caller.
