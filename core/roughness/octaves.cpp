@@ -144,6 +144,11 @@ void add_interpolated(const OctaveCells& c, Samples& s, std::vector<double>& scr
   }
 }
 
+// The seed of octave j's nodes (the octaves are independent noises).
+std::uint64_t octave_seed(std::uint64_t seed, int j) {
+  return seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1);
+}
+
 // The buffers of one thread's octaves, reused from box to box.
 struct OctaveBuffers {
   std::vector<double> node;           // a box's lattice nodes
@@ -158,7 +163,7 @@ struct OctaveBuffers {
 MCMD_AVX2_CLONES
 void add_cell_octave(std::uint64_t seed, double weight, const OctaveCells& cells, std::vector<std::uint32_t>& keys,
                      std::vector<double>& values) {
-  const CellHash32 hash(seed * 0x9E3779B97F4A7C15ull + 1);
+  const CellHash32 hash(octave_seed(seed, 0));
   const int w = cells.width();
   keys.resize(static_cast<std::size_t>(w));
   values.resize(static_cast<std::size_t>(w));
@@ -204,7 +209,7 @@ void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cel
     u = c * x + sn * y + ox;
     v = -sn * x + c * y + oy;
   };
-  const UniformHash hash(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1));
+  const UniformHash hash(octave_seed(seed, j));
   if (j == 1) {  // unrotated, spacing 2: every sample is a node, the spline its value
     column.resize(static_cast<std::size_t>(samples.columns()));
     for (int k = 0; k < samples.columns(); ++k) column[k] = hash.column(samples.sx.k0 + k);
