@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "common/zero_runs.hpp"
 #include "roughness/simd.hpp"
 
 namespace mcmd::rough {
@@ -73,54 +74,63 @@ struct PairRun {
 constexpr std::size_t kSparseRow = 8;
 
 // The pairs of lag l from row y's constraints `known` (a sparse row), into
-// their blocks' sums; z and m as for pair_run, cell (x, y) at at(x, y).
-template <class At>
+// their blocks' sums, read from the field itself (the values pair_run's z
+// holds at constraints, bit for bit).
 void add_listed_pairs(const RoughField& g, const Blocks& b, int bj, int y, int l, const std::vector<int>& known,
-                      const std::vector<double>& z, const std::vector<double>& m, const At& at,
                       std::vector<LagSums>& out) {
   const int dx = kLagDx[l], py = y + kLagDy[l];
   for (const int x : known) {
     if (x + dx >= g.w) break;
-    const std::size_t p = at(x + dx, py);
-    if (m[p] == 0.0) continue;
-    const double d = z[p] - z[at(x, y)];
+    const std::size_t p = g.index(x + dx, py);
+    if (!is_constraint(g.state[p])) continue;
+    const double d = g.z[p] - g.z[g.index(x, y)];
     LagSums& s = out[b.index((x + b.ox) / kBlock, bj)];
     s.sum[l] += d * d;
     s.count[l] += 1.0;
   }
 }
 
-// The pair sums of the blocks of block row bj into `out`, on a copy of its
-// rows and the 16 below as pair_run's z and m (buffers reused by the caller;
-// `known`: a sparse row's constraint columns). Cloned for AVX2 as add_octave
-// is (the same bits).
+// The pair sums of the blocks of block row bj into `out`. Dense rows run
+// pair_run on a copy of the block row's rows and the 16 below as its z and m,
+// made only when a row is dense: scattered samples (every row sparse) skip
+// that pass over 49 rows per 32 (buffers reused by the caller; `known`: a
+// sparse row's constraint columns). Cloned for AVX2 as add_octave is (the
+// same bits).
 MCMD_AVX2_CLONES
 void block_row_pairs(const RoughField& g, const Blocks& b, int bj, std::vector<double>& z, std::vector<double>& m,
                      std::vector<int>& known, std::vector<LagSums>& out) {
   constexpr int kReach = 16;  // the longest lag
   const int y0 = b.y0(bj), y1 = b.y1(bj, g.h);
   if (y1 <= y0) return;
-  // Rows ry0 .. ry1 - 1 (from one above, for the (1, -1) lag).
-  const int ry0 = std::max(0, y0 - 1), ry1 = std::min(g.h, y1 + kReach);
-  const std::size_t first = g.index(0, ry0), cells = static_cast<std::size_t>(ry1 - ry0) * g.w;
-  z.resize(cells);
-  m.resize(cells);
-  constraint_values(g.state + first, g.z + first, cells, z.data(), m.data());
-  const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - ry0) * g.w + x; };
+  bool sparse[kBlock];
+  bool any_dense = false;
   for (int y = y0; y < y1; ++y) {
     const CellState* row = g.state + g.index(0, y);
     const auto count = static_cast<std::size_t>(std::count_if(row, row + g.w, is_constraint));
-    const bool sparse = count * kSparseRow < static_cast<std::size_t>(g.w);
-    if (!sparse && positive_mod(g.y0 + y, 2) != 0) continue;
+    sparse[y - y0] = count * kSparseRow < static_cast<std::size_t>(g.w);
+    any_dense |= !sparse[y - y0] && positive_mod(g.y0 + y, 2) == 0;
+  }
+  // Rows ry0 .. ry1 - 1 (from one above, for the (1, -1) lag).
+  const int ry0 = std::max(0, y0 - 1), ry1 = std::min(g.h, y1 + kReach);
+  if (any_dense) {
+    const std::size_t first = g.index(0, ry0), cells = static_cast<std::size_t>(ry1 - ry0) * g.w;
+    z.resize(cells);
+    m.resize(cells);
+    constraint_values(g.state + first, g.z + first, cells, z.data(), m.data());
+  }
+  const auto at = [&](int x, int y) { return static_cast<std::size_t>(y - ry0) * g.w + x; };
+  for (int y = y0; y < y1; ++y) {
+    const CellState* row = g.state + g.index(0, y);
+    if (!sparse[y - y0] && positive_mod(g.y0 + y, 2) != 0) continue;
     known.clear();
-    for (int x = 0; sparse && x < g.w; ++x)
-      if (is_constraint(row[x])) known.push_back(x);
+    if (sparse[y - y0])
+      detail::for_each_nonzero(reinterpret_cast<const std::uint8_t*>(row), g.w, [&](int x) { known.push_back(x); });
     for (int l = 0; l < kLags; ++l) {
       const int dx = kLagDx[l], py = y + kLagDy[l];
       if (py < 0 || py >= g.h || dx >= g.w) continue;
       if (l >= kLaplacianLags && positive_mod(g.y0 + y, kLongLagRowStep) != 0) continue;
-      if (sparse) {
-        add_listed_pairs(g, b, bj, y, l, known, z, m, at, out);
+      if (sparse[y - y0]) {
+        add_listed_pairs(g, b, bj, y, l, known, out);
         continue;
       }
       for (int bi = 0; bi < b.nx; ++bi) {
