@@ -38,7 +38,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include "common/distance.hpp"
@@ -262,7 +261,12 @@ int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
 
 }  // namespace
 
-void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule, const ProgressFn& progress) {
+namespace {
+
+// The smooth fill, with `added` (null: nothing) added to each unknown cell
+// as it is written: thin_plate_with_roughness's + d, with no pass of its own.
+void smooth_fill(const FieldView& field, const Displacement* added, const ThinPlateSchedule& schedule,
+                 const ProgressFn& progress) {
   if (field.w < 1 || field.h < 1) return;
   const Plane ref = field.own_plane ? constraint_plane(field) : Plane{};
   std::vector<Lattice> levels = build_hierarchy(field, ref);
@@ -313,12 +317,25 @@ void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule
     }
   }
 
-  for (const Span& sp : fine.spans)
+  for (const Span& sp : fine.spans) {
+    const int fy = sp.y + box.y0;  // box is the whole field when not cropped
     for (int x = sp.x0; x < sp.x1; ++x) {
-      const int fx = x + box.x0, fy = sp.y + box.y0;  // box is the whole field when not cropped
+      const int fx = x + box.x0;
       field.z_at(fx, fy) = fine.z[fine.index(x, sp.y)] + ref.at(fx, fy);
     }
+    if (!added || fy < added->y0 || fy >= added->y0 + added->h) continue;
+    const int x0 = std::max(sp.x0 + box.x0, added->x0), x1 = std::min(sp.x1 + box.x0, added->x0 + added->w);
+    const double* v = added->values.data() + static_cast<std::size_t>(fy - added->y0) * added->w - added->x0;
+    double* z = field.z + field.index(0, fy);
+    for (int x = x0; x < x1; ++x) z[x] += v[x];  // in cache: just written
+  }
   report(progress, 1.0);
+}
+
+}  // namespace
+
+void thin_plate_smooth(const FieldView& field, const ThinPlateSchedule& schedule, const ProgressFn& progress) {
+  smooth_fill(field, nullptr, schedule, progress);
 }
 
 void thin_plate_with_roughness(const FieldView& field, long long x0, long long y0, const FillParams& params,
@@ -330,9 +347,9 @@ void thin_plate_with_roughness(const FieldView& field, long long x0, long long y
         schedule.vcycle.threads);
   if (d.empty()) return thin_plate_smooth(field, schedule, progress);
   // S(z − d) + d: the constraints are shifted for the solve, then restored
-  // (d is 0 outside its box): the displaced ones are found eight cells at a
-  // time (scattered samples: a few in a hundred cells), shifted and restored
-  // from their list, and every other cell of the box gains d.
+  // (d is 0 outside its box); the solve adds d to the unknown cells as it
+  // writes them. The displaced constraints are found eight cells at a time
+  // (scattered samples: a few in a hundred cells) and listed.
   static_assert(static_cast<int>(CellState::unknown) == 0 && sizeof(CellState) == 1);
   std::vector<std::size_t> shifted;
   std::vector<double> kept;
@@ -346,24 +363,7 @@ void thin_plate_with_roughness(const FieldView& field, long long x0, long long y
       field.z[row + x] -= v[x];
     });
   }
-  thin_plate_smooth(field, schedule, progress);
-  for (int y = d.y0; y < d.y0 + d.h; ++y) {
-    const std::size_t row = static_cast<std::size_t>(y) * field.w + d.x0;
-    const double* v = d.values.data() + static_cast<std::size_t>(y - d.y0) * d.w;
-    const CellState* state = field.state + row;
-    double* z = field.z + row;
-    // A constraint keeps its bits, another cell takes z + d: a blend of bit
-    // masks, which GCC vectorises where it leaves the select scalar.
-    for (int x = 0; x < d.w; ++x) {
-      const std::uint64_t keep = is_constraint(state[x]) ? ~std::uint64_t{0} : 0;
-      const double moved = z[x] + v[x];
-      std::uint64_t own, other;
-      std::memcpy(&own, z + x, sizeof own);
-      std::memcpy(&other, &moved, sizeof other);
-      own = (own & keep) | (other & ~keep);
-      std::memcpy(z + x, &own, sizeof own);
-    }
-  }
+  smooth_fill(field, &d, schedule, progress);
   for (std::size_t k = 0; k < shifted.size(); ++k) field.z[shifted[k]] = kept[k];
 }
 
