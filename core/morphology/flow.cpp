@@ -125,12 +125,13 @@ class Flood {
 // A land cell's receiver: the first sink beside it (east, then clockwise),
 // else its steepest lower land neighbour on the flooded levels (diagonals
 // √2 away), else -1 (a seed with no lower neighbour: out of the field).
+// For the cells on the field's border (interior_receivers does the rest).
 std::int32_t receiver_of(std::int32_t i, int x, int y, int w, int h, const FlowCell* kind,
                          const std::vector<double>& level) {
   std::int32_t best = -1;
   double steepest = 0.0;
   bool beside_sink = false;
-  const auto consider = [&](int k, std::int32_t j) {
+  for_each_neighbour(x, y, w, h, [&](int k, std::int32_t j) {
     if (beside_sink) return;
     if (kind[j] == FlowCell::sink) {
       best = j, beside_sink = true;
@@ -139,14 +140,34 @@ std::int32_t receiver_of(std::int32_t i, int x, int y, int w, int h, const FlowC
     if (kind[j] != FlowCell::land) return;
     const double slope = (level[i] - level[j]) * (k % 2 ? M_SQRT1_2 : 1.0);
     if (slope > steepest) steepest = slope, best = j;
-  };
-  if (x > 0 && y > 0 && x < w - 1 && y < h - 1) {  // interior: no bounds tests (the same order)
-    const std::array<std::int32_t, 8> offset = neighbour_offsets(w);
-    for (int k = 0; k < 8; ++k) consider(k, i + offset[k]);
-  } else {
-    for_each_neighbour(x, y, w, h, consider);
-  }
+  });
   return best;
+}
+
+// receiver_of for the interior cells of a row (x = 1 .. w - 2, from cell
+// `first`; -1 for those not land), without a branch per neighbour: a cell
+// the flood never reached (sink, off) has a NaN level, so its slope is never
+// the steepest, and the first sink is tracked beside the steepest land cell.
+// The same receivers; the branches on the slopes mispredicted (route's
+// instructions on a 1025² blob case 312 -> 204 M).
+void interior_receivers(std::int32_t* receiver, std::int32_t first, int w, const FlowCell* kind,
+                        const double* level) {
+  const std::array<std::int32_t, 8> offset = neighbour_offsets(w);
+  constexpr double kFactor[8] = {1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2};
+  for (std::int32_t i = first; i < first + w - 2; ++i) {
+    double steepest = 0.0;
+    std::int32_t best = -1, sink = -1;
+    for (int k = 0; k < 8; ++k) {
+      const std::int32_t j = i + offset[k];
+      const double slope = (level[i] - level[j]) * kFactor[k];
+      const bool steeper = slope > steepest;
+      steepest = steeper ? slope : steepest;
+      best = steeper ? j : best;
+      sink = (sink < 0) & (kind[j] == FlowCell::sink) ? j : sink;
+    }
+    const std::int32_t r = sink >= 0 ? sink : best;
+    receiver[i] = kind[i] == FlowCell::land ? r : -1;
+  }
 }
 
 }  // namespace
@@ -161,11 +182,19 @@ Flow route(const double* z, int w, int h, const FlowCell* kind) {
   f.h = h;
   const std::vector<double> level = flood_levels(z, w, h, kind);
   f.receiver.assign(static_cast<std::size_t>(w) * h, -1);
-  for (int y = 0; y < h; ++y)  // raster order: the neighbours' levels are near in memory
-    for (int x = 0; x < w; ++x) {
-      const std::int32_t i = y * w + x;
-      if (kind[i] == FlowCell::land) f.receiver[i] = receiver_of(i, x, y, w, h, kind, level);
+  const auto border = [&](int x, int y) {
+    const std::int32_t i = y * w + x;
+    if (kind[i] == FlowCell::land) f.receiver[i] = receiver_of(i, x, y, w, h, kind, level);
+  };
+  for (int y = 0; y < h; ++y) {  // raster order: the neighbours' levels are near in memory
+    if (y == 0 || y == h - 1 || w < 3) {
+      for (int x = 0; x < w; ++x) border(x, y);
+      continue;
     }
+    border(0, y);
+    interior_receivers(f.receiver.data(), y * w + 1, w, kind, level.data());
+    border(w - 1, y);
+  }
   return f;
 }
 
