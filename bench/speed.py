@@ -44,6 +44,7 @@ TRUTH_CASES = [
 REAL_CASES = ["srtm3_N42E001_pyrenees_voids", "srtm3_N43E007_alpes_maritimes_voids",
               "srtm1_N48W125_halfvoid_3601"]
 BIG = "ferranti3_california_nevada_10801x4801"
+ROUGH_CASES = (f"{BIG}__blobs", f"{BIG}__kept3")  # -rs auto timed beside the smooth fill
 MID = "ferranti3_sierra_nevada_4801"
 HALF = "srtm1_N48W125_halfvoid_3601"
 # files where -threads 2 is also run and its md5 compared with -threads 1
@@ -82,6 +83,9 @@ def parse_args(argv=None):
                     help="skip the -threads 2 md5 and -tile 257 RMSE checks")
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs per fill, interleaved; the median times are reported (3)")
+    ap.add_argument("--rs-repeat", type=int, default=7,
+                    help="rounds for the cases whose -rs auto cost is compared with the smooth fill's "
+                         "(the mosaics; at least --repeat): a ratio of two noisy times (7)")
     ap.add_argument("--keep", action="store_true", help="keep output rasters in the work dir")
     ap.add_argument("--work", default=None,
                     help="work folder (default bench/work/speed, or bench/work/speed-quick)")
@@ -176,7 +180,7 @@ def main(argv=None):
                 todo.append(("mcmd-t2", ["-threads", "2"]))
             if kind == "blobs":
                 todo.append(("mcmd-tile257", ["-tile", "257"]))
-            if cid in (f"{BIG}__blobs", f"{BIG}__kept3"):  # what roughness costs on the mosaics
+            if cid in ROUGH_CASES:  # what roughness costs on the mosaics
                 todo.append(("mcmd-rs-auto", ["-rs", "auto"]))
         specs = []
         for name, extra in todo:
@@ -196,7 +200,7 @@ def main(argv=None):
         # ratios then compare runs of the same minutes.
         for (name, _), r in zip(todo, V.cached_fills(
                 specs, run_key, force=a.force, log=log,
-                repeat=a.repeat,
+                repeat=max(a.repeat, a.rs_repeat) if any(n == "mcmd-rs-auto" for n, _ in todo) else a.repeat,
                 mem_limit_mb=a.mem_limit_mb or None)):
             results[(cid, name)] = r
         for sp in specs:
@@ -271,7 +275,9 @@ def write_report(a, runs, results, infos, mcmd_msg):
     L.append("Each file is filled by `mcmd_fillnodata` (default settings; all cores), by "
              "`mcmd_fillnodata -threads 1`, and by `gdal_fillnodata.py -md max(W,H) -si 2`, and "
              "copied by `gdal_translate` to an uncompressed GeoTIFF (the **floor**: reading and "
-             f"writing the file), in {a.repeat} interleaved rounds (the medians are shown). "
+             f"writing the file), in {a.repeat} interleaved rounds (the medians are shown; "
+             f"{max(a.repeat, a.rs_repeat)} rounds on the mosaics, whose `-rs auto` time is compared "
+             "with the smooth fill's below). "
              "**s** = whole-process wall time, **CPU** = user + system time, **MB** = peak "
              "resident set size, all from `/usr/bin/time -v` (file I/O and interpreter start-up "
              "included). **speed-up** = GDAL's time ÷ mcmd's (wall; CPU; mcmd `-threads 1` wall). "
@@ -350,6 +356,10 @@ def write_report(a, runs, results, infos, mcmd_msg):
     rough = beside_default(a, results, "mcmd-rs-auto")
     if rough:
         L.append("## Roughness: `-rs auto` vs the smooth fill")
+        L.append("")
+        L.append(f"Medians of {max(a.repeat, a.rs_repeat)} interleaved rounds (each round runs every fill "
+                 "of the case, GDAL's included): a ratio of two times that each move by ±5 % from run "
+                 "to run on this machine.")
         L.append("")
         L.append("| case | smooth s | smooth CPU | -rs auto s | -rs auto CPU | ratio (wall) | RMSE smooth "
                  "| RMSE -rs auto |")
