@@ -200,6 +200,56 @@ TEST(Flow, AccumulationCountsEveryCellUpstream) {
   EXPECT_GT(*std::max_element(a.begin(), a.end()), 100.0);
 }
 
+// Each land cell's receiver, against its definition walked neighbour by
+// neighbour on the flooded levels: the first sink beside it (east, then
+// clockwise), else its steepest lower land neighbour (diagonals √2 away,
+// the first of equal slopes), else -1. A field with pits, flats, sinks on
+// and off the border and off cells, so that every case meets the
+// interior cells' branch-free path and the border cells' own.
+TEST(Flow, ReceiversFollowTheirDefinition) {
+  const int w = 53, h = 37;
+  std::vector<double> z(static_cast<std::size_t>(w) * h);
+  std::vector<morph::FlowCell> kind(z.size(), morph::FlowCell::land);
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> bump(0, 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      z[i] = std::round(15.0 * std::sin(0.35 * x) * std::cos(0.27 * y) + 0.3 * y) + bump(rng);  // flats and pits
+      if (std::hypot(x - 20, y - 15) < 5 || std::hypot(x - 52, y - 3) < 3) kind[i] = morph::FlowCell::sink;
+      if ((x * 7 + y * 3) % 41 == 0) kind[i] = morph::FlowCell::off;
+    }
+  const morph::Flow f = morph::route(z.data(), w, h, kind.data());
+  const std::vector<double> level = morph::flood_levels(z.data(), w, h, kind.data());
+  constexpr int dx[8] = {1, 1, 0, -1, -1, -1, 0, 1}, dy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+  int to_sink = 0, to_land = 0, out = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      if (kind[i] != morph::FlowCell::land) {
+        EXPECT_EQ(f.receiver[i], -1);
+        continue;
+      }
+      std::int32_t sink = -1, best = -1;
+      double steepest = 0.0;
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + dx[k], ny = y + dy[k];
+        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+        const std::int32_t j = ny * w + nx;
+        if (kind[j] == morph::FlowCell::sink && sink < 0) sink = j;
+        if (kind[j] != morph::FlowCell::land) continue;
+        const double slope = (level[i] - level[j]) * (k % 2 ? M_SQRT1_2 : 1.0);
+        if (slope > steepest) steepest = slope, best = j;
+      }
+      const std::int32_t expected = sink >= 0 ? sink : best;
+      EXPECT_EQ(f.receiver[i], expected) << "cell " << x << ", " << y;
+      (expected < 0 ? out : sink >= 0 ? to_sink : to_land) += 1;
+    }
+  EXPECT_GT(to_sink, 20);
+  EXPECT_GT(to_land, 1000);
+  EXPECT_GT(out, 0);
+}
+
 TEST(Flow, DrainRaisesOnlyTheRaisableCellsOfAPit) {
   std::vector<double> z(25, 10.0);
   z[12] = 0.0;  // a pit in the middle of a 5×5 plateau
