@@ -259,10 +259,6 @@ int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
   return static_cast<int>(std::min<long long>(sweeps, s.max_sweeps));
 }
 
-}  // namespace
-
-namespace {
-
 // The smooth fill, with `added` (null: nothing) added to each unknown cell
 // as it is written: thin_plate_with_roughness's + d, with no pass of its own.
 void smooth_fill(const FieldView& field, const Displacement* added, const ThinPlateSchedule& schedule,
@@ -325,9 +321,9 @@ void smooth_fill(const FieldView& field, const Displacement* added, const ThinPl
     }
     if (!added || fy < added->y0 || fy >= added->y0 + added->h) continue;
     const int x0 = std::max(sp.x0 + box.x0, added->x0), x1 = std::min(sp.x1 + box.x0, added->x0 + added->w);
-    const double* v = added->values.data() + static_cast<std::size_t>(fy - added->y0) * added->w - added->x0;
+    const double* v = added->values.data() + static_cast<std::size_t>(fy - added->y0) * added->w;
     double* z = field.z + field.index(0, fy);
-    for (int x = x0; x < x1; ++x) z[x] += v[x];  // in cache: just written
+    for (int x = x0; x < x1; ++x) z[x] += v[x - added->x0];  // in cache: just written
   }
   report(progress, 1.0);
 }
