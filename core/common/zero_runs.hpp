@@ -15,6 +15,7 @@ namespace mcmd::detail {
 // left to right.
 template <class F>
 void for_each_zero_run(const std::uint8_t* row, int w, F&& f) {
+  if (w <= 0) return;  // an empty row may be null: no memchr on it
   const std::uint8_t* const end = row + w;
   for (const std::uint8_t* p = row;
        (p = static_cast<const std::uint8_t*>(std::memchr(p, 0, static_cast<std::size_t>(end - p))));) {
