@@ -8,6 +8,9 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <utility>
+
+#include "mcmd/cell_state.hpp"
 
 namespace mcmd::detail {
 
@@ -43,6 +46,14 @@ void for_each_nonzero(const std::uint8_t* row, int w, F&& f) {
   }
   for (; x < w; ++x)
     if (row[x]) f(x);
+}
+
+// Calls f(x) for each constraint cell of a row of states, left to right:
+// a constraint is a non-zero byte (unknown is 0).
+template <class F>
+void for_each_constraint(const CellState* row, int w, F&& f) {
+  static_assert(static_cast<int>(CellState::unknown) == 0 && sizeof(CellState) == 1);
+  for_each_nonzero(reinterpret_cast<const std::uint8_t*>(row), w, std::forward<F>(f));
 }
 
 }  // namespace mcmd::detail

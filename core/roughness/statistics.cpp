@@ -124,7 +124,7 @@ void block_row_pairs(const RoughField& g, const Blocks& b, int bj, std::vector<d
     if (!sparse[y - y0] && positive_mod(g.y0 + y, 2) != 0) continue;
     known.clear();
     if (sparse[y - y0])
-      detail::for_each_nonzero(reinterpret_cast<const std::uint8_t*>(row), g.w, [&](int x) { known.push_back(x); });
+      detail::for_each_constraint(row, g.w, [&](int x) { known.push_back(x); });
     for (int l = 0; l < kLags; ++l) {
       const int dx = kLagDx[l], py = y + kLagDy[l];
       if (py < 0 || py >= g.h || dx >= g.w) continue;

@@ -346,13 +346,12 @@ void thin_plate_with_roughness(const FieldView& field, long long x0, long long y
   // (d is 0 outside its box); the solve adds d to the unknown cells as it
   // writes them. The displaced constraints are found eight cells at a time
   // (scattered samples: a few in a hundred cells) and listed.
-  static_assert(static_cast<int>(CellState::unknown) == 0 && sizeof(CellState) == 1);
   std::vector<std::size_t> shifted;
   std::vector<double> kept;
   for (int y = d.y0; y < d.y0 + d.h; ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * field.w + d.x0;
     const double* v = d.values.data() + static_cast<std::size_t>(y - d.y0) * d.w;
-    detail::for_each_nonzero(reinterpret_cast<const std::uint8_t*>(field.state + row), d.w, [&](int x) {
+    detail::for_each_constraint(field.state + row, d.w, [&](int x) {
       if (v[x] == 0.0) return;
       shifted.push_back(row + static_cast<std::size_t>(x));
       kept.push_back(field.z[row + x]);
