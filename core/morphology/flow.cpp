@@ -15,6 +15,8 @@ namespace {
 
 constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
 constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+// 1 / the step's length in cells, in that order: a drop over it is its slope.
+constexpr double kPerStep[8] = {1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2};
 
 // Calls f(k, neighbour index) for the neighbours of (x, y) inside the field.
 template <class F>
@@ -138,7 +140,7 @@ std::int32_t receiver_of(std::int32_t i, int x, int y, int w, int h, const FlowC
       return;
     }
     if (kind[j] != FlowCell::land) return;
-    const double slope = (level[i] - level[j]) * (k % 2 ? M_SQRT1_2 : 1.0);
+    const double slope = (level[i] - level[j]) * kPerStep[k];
     if (slope > steepest) steepest = slope, best = j;
   });
   return best;
@@ -153,13 +155,12 @@ std::int32_t receiver_of(std::int32_t i, int x, int y, int w, int h, const FlowC
 void interior_receivers(std::int32_t* receiver, std::int32_t first, int w, const FlowCell* kind,
                         const double* level) {
   const std::array<std::int32_t, 8> offset = neighbour_offsets(w);
-  constexpr double kFactor[8] = {1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2};
   for (std::int32_t i = first; i < first + w - 2; ++i) {
     double steepest = 0.0;
     std::int32_t best = -1, sink = -1;
     for (int k = 0; k < 8; ++k) {
       const std::int32_t j = i + offset[k];
-      const double slope = (level[i] - level[j]) * kFactor[k];
+      const double slope = (level[i] - level[j]) * kPerStep[k];
       const bool steeper = slope > steepest;
       steepest = steeper ? slope : steepest;
       best = steeper ? j : best;
