@@ -91,11 +91,15 @@ double cubic_mid(double a, double b, double c, double d) { return (9.0 * (b + c)
 
 // The cells an octave is added to: raster rectangle [gx0, gx1) × [gy0, gy1),
 // row-major in `out` (`stride` apart), where `mask` is set.
+// The amplitude at its cells: `amplitude` over field coordinates (raster
+// ones less fx, fy).
 struct OctaveCells {
   long long gx0, gx1, gy0, gy1;
   const std::uint8_t* mask;
   double* out;
   int stride;
+  const Amplitude* amplitude;
+  long long fx, fy;
   int width() const { return static_cast<int>(gx1 - gx0); }
   const std::uint8_t* mask_row(long long gy) const { return mask + (gy - gy0) * stride; }
   double* out_row(long long gy) const { return out + (gy - gy0) * stride; }
@@ -124,49 +128,6 @@ struct Samples {
   }
 };
 
-// The samples interpolated at each masked cell and added: each row of
-// samples at every cell of the rectangle's width, then the cells of each row
-// from those rows. Every loop is branch-free so that it vectorises: a row's
-// midpoints are computed for all its samples, then interleaved with them; a
-// cell off the mask adds +0.0 (masked), and keeps the +0.0 it holds.
-MCMD_AVX2_CLONES
-void add_interpolated(const OctaveCells& c, Samples& s, std::vector<double>& scratch) {
-  const int w = c.width();
-  const int nsy = s.rows(), nsx = s.columns();
-  scratch.resize(static_cast<std::size_t>(nsy) * w + static_cast<std::size_t>(nsx));
-  double* across = scratch.data();  // nsy rows of w
-  double* mid = across + static_cast<std::size_t>(nsy) * w;  // mid[k]: halfway between samples k and k + 1
-  // Cell i of a row is sample first + i / 2 (even raster column, i even) or
-  // the midpoint after it, with parity p = gx0's parity shifting i by one.
-  const int p = static_cast<int>(c.gx0 & 1);
-  const long long first = floor_half(c.gx0) - s.sx.k0;  // the sample at or left of gx0
-  for (int r = 0; r < nsy; ++r) {
-    const double* srow = s.row(r);
-    double* arow = across + static_cast<std::size_t>(r) * w;
-    for (int k = 1; k + 2 < nsx; ++k) mid[k] = cubic_mid(srow[k - 1], srow[k], srow[k + 1], srow[k + 2]);
-    int i = 0;
-    if (p == 1 && w > 0) arow[i++] = mid[first];  // gx0 odd: a midpoint first
-    const double* even = srow + first + p;         // the sample of cell i (i - p even)
-    const double* odd = mid + first + p;           // the midpoint of cell i + 1
-    const int pairs = (w - i) / 2;
-    for (int q = 0; q < pairs; ++q) {
-      arow[i + 2 * q] = even[q];
-      arow[i + 2 * q + 1] = odd[q];
-    }
-    if (i + 2 * pairs < w) arow[w - 1] = even[pairs];
-  }
-  for (long long gy = c.gy0; gy < c.gy1; ++gy) {
-    const std::uint8_t* m = c.mask_row(gy);
-    double* o = c.out_row(gy);
-    const double* a1 = across + static_cast<std::size_t>(floor_half(gy) - s.sy.k0) * w;
-    if ((gy & 1) == 0) {
-      for (int i = 0; i < w; ++i) o[i] += masked(a1[i], m[i]);
-    } else {
-      for (int i = 0; i < w; ++i) o[i] += masked(cubic_mid(a1[i - w], a1[i], a1[i + w], a1[i + 2 * w]), m[i]);
-    }
-  }
-}
-
 // The seed of octave j's nodes (the octaves are independent noises).
 std::uint64_t octave_seed(std::uint64_t seed, int j) {
   return seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(j + 1);
@@ -180,31 +141,71 @@ struct OctaveBuffers {
   std::vector<double> scratch;
 };
 
-// The octave of spacing 1, times `weight`, added at the masked cells: every
-// cell is a node, the spline its value, uniform from a 32-bit hash (the
-// 64-bit one cost 40 instructions a cell, on up to every cell of a raster).
+// The cells' rows, written (each cell by one run of blocks: assigned, not
+// added): the octave of spacing 1 (every cell a node, the spline its value,
+// uniform from a 32-bit hash: the 64-bit one cost 40 instructions a cell, on
+// up to every cell of a raster), times `weight0`, plus the samples (when
+// `s` is not null) interpolated at every cell, times the amplitude, at the
+// masked cells (+0.0 elsewhere). The samples are interpolated along rows
+// first, each row of samples at every cell of the width, then along columns.
+// Every loop is branch-free so that it vectorises: a row's midpoints are
+// computed for all its samples, then interleaved with them; the mask is a
+// bit mask (masked).
 MCMD_AVX2_CLONES
-void add_cell_octave(std::uint64_t seed, double weight, const OctaveCells& cells, std::vector<std::uint32_t>& keys,
-                     std::vector<double>& values) {
+void write_cells(std::uint64_t seed, double weight0, const OctaveCells& c, const Samples* s, OctaveBuffers& b) {
+  const int w = c.width();
+  const int nsy = s ? s->rows() : 0, nsx = s ? s->columns() : 0;
+  b.scratch.resize(static_cast<std::size_t>(nsy) * w + static_cast<std::size_t>(nsx) + static_cast<std::size_t>(w));
+  double* across = b.scratch.data();                          // nsy rows of w
+  double* mid = across + static_cast<std::size_t>(nsy) * w;   // mid[k]: halfway between samples k and k + 1
+  double* v = mid + nsx;                                      // a row's noise
+  if (s) {
+    // Cell i of a row is sample first + i / 2 (even raster column, i even) or
+    // the midpoint after it, with parity p = gx0's parity shifting i by one.
+    const int p = static_cast<int>(c.gx0 & 1);
+    const long long first = floor_half(c.gx0) - s->sx.k0;  // the sample at or left of gx0
+    for (int r = 0; r < nsy; ++r) {
+      const double* srow = s->values.data() + static_cast<std::size_t>(r) * nsx;
+      double* arow = across + static_cast<std::size_t>(r) * w;
+      for (int k = 1; k + 2 < nsx; ++k) mid[k] = cubic_mid(srow[k - 1], srow[k], srow[k + 1], srow[k + 2]);
+      int i = 0;
+      if (p == 1 && w > 0) arow[i++] = mid[first];  // gx0 odd: a midpoint first
+      const double* even = srow + first + p;         // the sample of cell i (i - p even)
+      const double* odd = mid + first + p;           // the midpoint of cell i + 1
+      const int pairs = (w - i) / 2;
+      for (int q = 0; q < pairs; ++q) {
+        arow[i + 2 * q] = even[q];
+        arow[i + 2 * q + 1] = odd[q];
+      }
+      if (i + 2 * pairs < w) arow[w - 1] = even[pairs];
+    }
+  }
   const CellHash32 hash(octave_seed(seed, 0));
-  const int w = cells.width();
-  keys.resize(static_cast<std::size_t>(w));
-  values.resize(static_cast<std::size_t>(w));
-  double* v = values.data();
-  for (int i = 0; i < w; ++i) keys[i] = hash.column(cells.gx0 + i);
-  const double unit = weight * std::sqrt(3.0) * 0x1p-31;  // uniform in [-√3, √3): unit variance
-  for (long long gy = cells.gy0; gy < cells.gy1; ++gy) {
-    const std::uint8_t* m = cells.mask_row(gy);
-    double* o = cells.out_row(gy);
+  b.keys.resize(static_cast<std::size_t>(w));
+  const std::uint32_t* k = b.keys.data();
+  for (int i = 0; i < w; ++i) b.keys[i] = hash.column(c.gx0 + i);
+  const double unit = weight0 * std::sqrt(3.0) * 0x1p-31;  // uniform in [-√3, √3): unit variance
+  AmplitudeRows amplitude(*c.amplitude, static_cast<int>(c.gx0 - c.fx), static_cast<int>(c.gx1 - c.fx));
+  for (long long gy = c.gy0; gy < c.gy1; ++gy) {
     const std::uint32_t row = hash.row(gy);
-    const std::uint32_t* k = keys.data();
     for (int i = 0; i < w; ++i) v[i] = unit * static_cast<double>(static_cast<std::int32_t>(CellHash32::at(k[i], row)));
-    for (int i = 0; i < w; ++i) o[i] += m[i] ? v[i] : 0.0;  // +0.0 off the mask: a select that vectorises
+    if (s) {
+      const double* a1 = across + static_cast<std::size_t>(floor_half(gy) - s->sy.k0) * w;
+      if ((gy & 1) == 0) {
+        for (int i = 0; i < w; ++i) v[i] += a1[i];
+      } else {
+        for (int i = 0; i < w; ++i) v[i] += cubic_mid(a1[i - w], a1[i], a1[i + w], a1[i + 2 * w]);
+      }
+    }
+    const AmplitudeRows::Row f = amplitude.row(static_cast<int>(gy - c.fy));
+    const std::uint8_t* m = c.mask_row(gy);
+    double* o = c.out_row(gy);
+    for (int i = 0; i < w; ++i) o[i] = masked(v[i] * f.at(i), m[i]);
   }
 }
 
-// One octave's noise, times `weight`, added to `cells` (spacing 1,
-// add_cell_octave) or to `samples` (interpolated later): white noise on a
+// One octave's noise of spacing 2^j >= 2, times `weight`, added to
+// `samples` (interpolated by write_cells): white noise on a
 // lattice of spacing 2^j, rotated by j golden angles from spacing 4 on,
 // interpolated with Catmull-Rom splines. The nodes are a function of global
 // coordinates, so any window, field or block sees the same value at a cell
@@ -218,9 +219,7 @@ void add_cell_octave(std::uint64_t seed, double weight, const OctaveCells& cells
 // called it with the AVX one, and read its Quad argument as garbage: node
 // offsets far outside `node`.
 MCMD_AVX2_CLONES
-void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cells, Samples& samples,
-                OctaveBuffers& b) {
-  if (j == 0) return add_cell_octave(seed, weight, cells, b.keys, b.scratch);
+void add_octave(std::uint64_t seed, int j, double weight, Samples& samples, OctaveBuffers& b) {
   std::vector<double>& node = b.node;
   std::vector<double>& scratch = b.scratch;
   std::vector<std::uint64_t>& column = b.column;
@@ -312,7 +311,8 @@ void add_octave(std::uint64_t seed, int j, double weight, const OctaveCells& cel
 // block. A cell's value is a function of its raster coordinates only, so it
 // is the same whatever box it is made in: runs change the work, not the bits.
 void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const std::vector<std::uint8_t>& mask,
-               std::uint64_t seed, double H, int octaves, std::vector<double>& out, int threads) {
+               std::uint64_t seed, double H, int octaves, const Amplitude& amplitude, std::vector<double>& out,
+               int threads) {
 #pragma omp parallel for num_threads(threads) schedule(dynamic) if (threads > 1)
   for (int bj = 0; bj < blocks.ny; ++bj) {
     OctaveBuffers buffers;
@@ -328,12 +328,18 @@ void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const s
         r = Rect{r.x0, next.x1, std::min(r.y0, next.y0), std::max(r.y1, next.y1)};
       }
       const OctaveCells cells{g.x0 + r.x0, g.x0 + r.x1, g.y0 + r.y0, g.y0 + r.y1, mask.data() + a.index(r.x0, r.y0),
-                              out.data() + a.index(r.x0, r.y0), a.w};
+                              out.data() + a.index(r.x0, r.y0), a.w, &amplitude, g.x0, g.y0};
       if (octaves > 1) samples.reset(cells);  // spacings of 2 and more are summed there
-      for (int j = 0; j < octaves; ++j) add_octave(seed, j, std::exp2(j * H), cells, samples, buffers);
-      if (octaves > 1) add_interpolated(cells, samples, buffers.scratch);
+      for (int j = 1; j < octaves; ++j) add_octave(seed, j, std::exp2(j * H), samples, buffers);
+      write_cells(seed, 1.0, cells, octaves > 1 ? &samples : nullptr, buffers);
     }
   }
+}
+
+double noise_laplacian_variance(double H, int octaves) {
+  double sum = 0.0;
+  for (int j = 0; j < std::min(octaves, kOctaves); ++j) sum += std::exp2(2.0 * j * H) * kOctaveLaplacianVariance[j];
+  return sum;
 }
 
 // The octaves -rs auto makes for a field whose target cells all lie within

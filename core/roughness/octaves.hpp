@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "roughness/amplitude.hpp"
 #include "roughness/blocks.hpp"
 #include "roughness/field.hpp"
 
@@ -13,13 +14,25 @@ namespace mcmd::rough {
 
 constexpr int kOctaves = 6;         // spacings 1 .. 32 cells
 
-// The noise, octave j weighted 2^(jH), added to `out` (over area `a`) at the
-// cells of `mask`, over the active blocks' noise boxes (the union of a run of
-// neighbouring ones at a time), block rows on `threads` threads (a lone
-// field's noise, e.g. 3 % kept cells: each cell is written by one block row,
-// the same bits for any count). Every mask cell must lie in its block's box.
+// The noise, octave j weighted 2^(jH), times the amplitude, written to `out`
+// (over area `a`) at the cells of `mask`, over the active blocks' noise boxes
+// (the union of a run of neighbouring ones at a time; +0.0 at their other
+// cells), block rows on `threads` threads (a lone field's noise, e.g. 3 %
+// kept cells: each cell is written by one block row, the same bits for any
+// count). Every mask cell must lie in its block's box.
 void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const std::vector<std::uint8_t>& mask,
-               std::uint64_t seed, double H, int octaves, std::vector<double>& out, int threads);
+               std::uint64_t seed, double H, int octaves, const Amplitude& amplitude, std::vector<double>& out,
+               int threads);
+
+// The variance of the 5-point Laplacian of one octave of unit weight, as
+// add_noise makes it (its samples interpolated), averaged over the cells:
+// spacing 1 is white noise of unit variance (4² + 4 = 20); the others were
+// measured over 6 × 4096² cells (spread between the 6 under 1 % up to spacing
+// 16, 3 % at 32; Roughness.OctaveLaplacianVariancesHold checks them). The
+// octaves are independent, so the noise's is the weighted sum: known without
+// a pass over the noise.
+constexpr double kOctaveLaplacianVariance[kOctaves] = {20.0, 1.628, 0.1216, 0.00866, 5.55e-4, 3.50e-5};
+double noise_laplacian_variance(double H, int octaves);
 
 // The octaves -rs auto makes for a field whose target cells all lie within
 // `depth` cells of a constraint (< 0: not known): those of spacing up to the

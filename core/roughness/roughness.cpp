@@ -22,9 +22,6 @@ namespace {
 
 using namespace rough;
 
-constexpr double kStrength = 0.85;  // global calibration: of the terrain's curvature amplitude
-                                    // (measured Laplacian spread in voids ≈ 1, the smooth fill adds some)
-
 // The cells whose noise a fill uses: its wanted unknown cells (targets) and the
 // cells within kNoiseReach cells (Chebyshev) of one. The discrete thin plate at an
 // unknown cell involves no constraint farther than 2 cells; the finest
@@ -183,26 +180,18 @@ Displacement roughness_displacement(const RoughField& grid, const FillParams& pa
   const std::vector<std::uint8_t> target = target_mask(grid, area, targets);
   const std::vector<std::uint8_t> mask = noise_cells(target, area);
   set_noise_boxes(grid, area, mask, blocks);
-  Displacement d{area.x0, area.y0, area.w, area.h, std::vector<double>(area.cells(), 0.0)};
-  std::vector<double>& noise = d.values;
-  add_noise(grid, area, blocks, mask, params.seed, H, params.rs_auto ? auto_octaves(grid.depth) : kOctaves, noise,
-            threads);
-  if (!params.rs_auto) {  // the coarsest octave's amplitude is rs · unit
+  const int octaves = params.rs_auto ? auto_octaves(grid.depth) : kOctaves;
+  Amplitude amplitude;
+  if (params.rs_auto) {  // the terrain's Laplacian variance around each block
+    amplitude.blocks = &blocks;
+    amplitude.scales = block_scales(blocks, LagTable(pairs, blocks), global, noise_laplacian_variance(H, octaves));
+  } else {  // the coarsest octave's amplitude is rs · unit
     const double unit = params.noise_unit > 0 ? params.noise_unit
                                               : known_range({grid.z, grid.cells()}, {grid.state, grid.cells()});
-    const double scale = params.rs * unit * std::exp2(-(kOctaves - 1) * H);
-    for (double& v : noise) v *= scale;
-    return crop_to_noise(area, blocks, std::move(d));
+    amplitude.constant = params.rs * unit * std::exp2(-(kOctaves - 1) * H);
   }
-  // Global calibration: the noise's second-difference variance is kStrength²
-  // of the terrain's; local targets per block where there are pairs enough.
-  const std::vector<NoiseMoments> moments = noise_moments(grid, area, target, blocks, noise, threads);
-  NoiseMoments all;
-  for (const NoiseMoments& m : moments) all.add(m);
-  const double c = all.n > 0 ? all.curvature / (2.0 * all.n) : 0.0;
-  const double global_scale = c > 0 ? kStrength * std::sqrt(global.curvature / c) : 0.0;
-  scale_noise(area, blocks, block_scales(blocks, LagTable(pairs, blocks), moments, global, global_scale), noise,
-              threads);
+  Displacement d{area.x0, area.y0, area.w, area.h, std::vector<double>(area.cells(), 0.0)};
+  add_noise(grid, area, blocks, mask, params.seed, H, octaves, amplitude, d.values, threads);
   return crop_to_noise(area, blocks, std::move(d));
 }
 

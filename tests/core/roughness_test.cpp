@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "method/fill_grid.hpp"
+#include "roughness/octaves.hpp"
 #include "roughness/roughness.hpp"
 #include "roughness/statistics.hpp"
 #include "thin_plate/thin_plate.hpp"
@@ -385,4 +386,42 @@ TEST(Roughness, PairSumsCountEveryPairOfConstraints) {
       EXPECT_NEAR(got.sum[l], sum, 1e-9 * sum) << "lag " << l << ", kept " << kept;
     }
   }
+}
+
+// -rs auto scales the noise by the Laplacian variance its octaves are known
+// to have (kOctaveLaplacianVariance), not by one measured on the noise: each
+// octave alone (two noises with H = 0, one octave apart) must have it.
+TEST(Roughness, OctaveLaplacianVariancesHold) {
+  using namespace mcmd::rough;
+  constexpr int n = 1024, margin = 40;
+  const std::vector<double> z(n * n, 0.0);
+  const std::vector<CellState> state(n * n, CellState::unknown);
+  const mcmd::RoughField field{n, n, 1234, -567, z.data(), state.data()};
+  Blocks blocks = block_lattice(field);
+  for (int j = 0; j < blocks.ny; ++j)
+    for (int i = 0; i < blocks.nx; ++i) {
+      const Rect r{blocks.x0(i), blocks.x1(i, n), blocks.y0(j), blocks.y1(j, n)};
+      blocks.noise_box[blocks.index(i, j)] = r.empty() ? Rect{0, 0, 0, 0} : r;
+    }
+  const Area area{0, 0, n, n};
+  const std::vector<std::uint8_t> mask(area.cells(), 1);
+  const Amplitude unit;
+  std::vector<double> below(area.cells(), 0.0);
+  const double tolerance[kOctaves] = {0.02, 0.02, 0.02, 0.03, 0.06, 0.15};  // coarse octaves: few nodes
+  for (int j = 0; j < kOctaves; ++j) {
+    std::vector<double> with(area.cells(), 0.0);
+    add_noise(field, area, blocks, mask, 7, 0.0, j + 1, unit, with, 2);
+    double sum = 0, cells = 0;
+    for (int y = margin; y < n - margin; ++y)
+      for (int x = margin; x < n - margin; ++x) {
+        const auto v = [&](int u, int w) { return with[w * n + u] - below[w * n + u]; };
+        const double lap = v(x - 1, y) + v(x + 1, y) + v(x, y - 1) + v(x, y + 1) - 4.0 * v(x, y);
+        sum += lap * lap;
+        cells += 1;
+      }
+    EXPECT_NEAR(sum / cells / kOctaveLaplacianVariance[j], 1.0, tolerance[j]) << "octave " << j;
+    below = std::move(with);
+  }
+  const double H = 0.4;
+  EXPECT_NEAR(noise_laplacian_variance(H, 3), 20.0 + std::exp2(0.8) * 1.628 + std::exp2(1.6) * 0.1216, 1e-12);
 }
