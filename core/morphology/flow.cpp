@@ -7,6 +7,7 @@
 #include <limits>
 #include <utility>
 
+#include "common/simd_clones.hpp"
 #include "morphology/radix_heap.hpp"
 
 namespace mcmd::morph {
@@ -150,24 +151,46 @@ std::int32_t receiver_of(std::int32_t i, int x, int y, int w, int h, const FlowC
 // `first`; -1 for those not land), without a branch per neighbour: a cell
 // the flood never reached (sink, off) has a NaN level, so its slope is never
 // the steepest, and the first sink is tracked beside the steepest land cell.
-// The same receivers; the branches on the slopes mispredicted (route's
-// instructions on a 1025² blob case 312 -> 204 M).
-void interior_receivers(std::int32_t* receiver, std::int32_t first, int w, const FlowCell* kind,
-                        const double* level) {
+// Neighbour by neighbour over the whole row (`row`: scratch), so that each
+// pass is a vector loop over contiguous cells (AVX2: 4 at a time); each cell
+// still sees its neighbours in receiver_of's order: the same receivers.
+// Route's own instructions on a 1025² blob case: per cell with branches 312 M,
+// branch-free 204 M (188 M with the flood's seeding), by rows 2 M + 121 M.
+struct ReceiverRow {
+  std::vector<double> steepest;
+  std::vector<std::int32_t> best, sink;
+};
+MCMD_AVX2_CLONES
+void interior_receivers(std::int32_t* receiver, std::int32_t first, int w, const FlowCell* kind, const double* level,
+                        ReceiverRow& row) {
   const std::array<std::int32_t, 8> offset = neighbour_offsets(w);
-  for (std::int32_t i = first; i < first + w - 2; ++i) {
-    double steepest = 0.0;
-    std::int32_t best = -1, sink = -1;
-    for (int k = 0; k < 8; ++k) {
-      const std::int32_t j = i + offset[k];
-      const double slope = (level[i] - level[j]) * kPerStep[k];
-      const bool steeper = slope > steepest;
-      steepest = steeper ? slope : steepest;
-      best = steeper ? j : best;
-      sink = (sink < 0) & (kind[j] == FlowCell::sink) ? j : sink;
+  const int n = w - 2;
+  row.steepest.assign(static_cast<std::size_t>(n), 0.0);
+  row.best.assign(static_cast<std::size_t>(n), -1);
+  row.sink.assign(static_cast<std::size_t>(n), -1);
+  double* __restrict steepest = row.steepest.data();
+  std::int32_t* __restrict best = row.best.data();
+  std::int32_t* __restrict sink = row.sink.data();
+  const double* here = level + first;
+  const FlowCell* kind_here = kind + first;
+  for (int k = 0; k < 8; ++k) {
+    const double* there = here + offset[k];
+    const FlowCell* kind_there = kind_here + offset[k];
+    const std::int32_t j0 = first + offset[k];
+    const double per_step = kPerStep[k];
+    for (int x = 0; x < n; ++x) {
+      const double slope = (here[x] - there[x]) * per_step, s = steepest[x];
+      const std::int32_t b = best[x], t = sink[x];
+      const bool steeper = std::isgreater(slope, s);  // a quiet compare: GCC if-converts it, not `>`
+      const bool first_sink = (t < 0) & (kind_there[x] == FlowCell::sink);
+      steepest[x] = steeper ? slope : s;
+      best[x] = steeper ? j0 + x : b;
+      sink[x] = first_sink ? j0 + x : t;
     }
-    const std::int32_t r = sink >= 0 ? sink : best;
-    receiver[i] = kind[i] == FlowCell::land ? r : -1;
+  }
+  for (int x = 0; x < n; ++x) {
+    const std::int32_t r = sink[x] >= 0 ? sink[x] : best[x];
+    receiver[first + x] = kind_here[x] == FlowCell::land ? r : -1;
   }
 }
 
@@ -187,13 +210,14 @@ Flow route(const double* z, int w, int h, const FlowCell* kind) {
     const std::int32_t i = y * w + x;
     if (kind[i] == FlowCell::land) f.receiver[i] = receiver_of(i, x, y, w, h, kind, level);
   };
+  ReceiverRow row;
   for (int y = 0; y < h; ++y) {  // raster order: the neighbours' levels are near in memory
     if (y == 0 || y == h - 1 || w < 3) {
       for (int x = 0; x < w; ++x) border(x, y);
       continue;
     }
     border(0, y);
-    interior_receivers(f.receiver.data(), y * w + 1, w, kind, level.data());
+    interior_receivers(f.receiver.data(), y * w + 1, w, kind, level.data(), row);
     border(w - 1, y);
   }
   return f;

@@ -2,6 +2,8 @@
 // (internal to roughness/).
 #pragma once
 
+#include "common/simd_clones.hpp"  // MCMD_AVX2_CLONES
+
 namespace mcmd::rough {
 
 // Four doubles as one value (a GCC vector extension: one AVX2 register in
@@ -14,15 +16,6 @@ using Quad = double __attribute__((vector_size(32)));
 using QuadBits = long long __attribute__((vector_size(32)));
 using QuadIndex = int __attribute__((vector_size(16)));  // node offsets: small
 
-// The hot loops' AVX2 clones, chosen at load time (GNU ifunc); elsewhere
-// (other architectures, other compilers) the one portable version. Not
-// under ThreadSanitizer: its instrumented ifunc resolver runs while the
-// loader relocates, before the sanitizer is set up, and crashes.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_THREAD__)
-#define MCMD_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define MCMD_AVX2_CLONES
-#endif
 
 // std::floor for the node coordinates (|v| far below 2^51), without the call
 // to libm that std::floor is on baseline x86-64: 2 per cell and octave.
