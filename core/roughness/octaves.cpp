@@ -89,10 +89,9 @@ double cubic_mid(double a, double b, double c, double d) { return (9.0 * (b + c)
   return v;
 }
 
-// The cells an octave is added to: raster rectangle [gx0, gx1) × [gy0, gy1),
-// row-major in `out` (`stride` apart), where `mask` is set.
-// The amplitude at its cells: `amplitude` over field coordinates (raster
-// ones less fx, fy).
+// The cells the noise is written to: raster rectangle [gx0, gx1) × [gy0,
+// gy1), row-major in `out` (`stride` apart), where `mask` is set; its
+// amplitude there is `amplitude` at field coordinates (raster ones less fx, fy).
 struct OctaveCells {
   long long gx0, gx1, gy0, gy1;
   const std::uint8_t* mask;
@@ -141,45 +140,49 @@ struct OctaveBuffers {
   std::vector<double> scratch;
 };
 
+// Each row of samples interpolated at every cell of the width of `c`, into
+// `across` (s.rows() rows of c.width()); `mid` holds s.columns() scratch.
+// Branch-free so that it vectorises: a row's midpoints are computed for all
+// its samples, then interleaved with them.
+MCMD_AVX2_CLONES
+void interpolate_along_rows(const OctaveCells& c, const Samples& s, double* across, double* mid) {
+  const int w = c.width(), nsx = s.columns();
+  // Cell i of a row is sample first + i / 2 (even raster column, i even) or
+  // the midpoint after it, with parity p = gx0's parity shifting i by one.
+  const int p = static_cast<int>(c.gx0 & 1);
+  const long long first = floor_half(c.gx0) - s.sx.k0;  // the sample at or left of gx0
+  for (int r = 0; r < s.rows(); ++r) {
+    const double* srow = s.values.data() + static_cast<std::size_t>(r) * nsx;
+    double* arow = across + static_cast<std::size_t>(r) * w;
+    for (int k = 1; k + 2 < nsx; ++k) mid[k] = cubic_mid(srow[k - 1], srow[k], srow[k + 1], srow[k + 2]);
+    int i = 0;
+    if (p == 1 && w > 0) arow[i++] = mid[first];  // gx0 odd: a midpoint first
+    const double* even = srow + first + p;         // the sample of cell i (i - p even)
+    const double* odd = mid + first + p;           // the midpoint of cell i + 1
+    const int pairs = (w - i) / 2;
+    for (int q = 0; q < pairs; ++q) {
+      arow[i + 2 * q] = even[q];
+      arow[i + 2 * q + 1] = odd[q];
+    }
+    if (i + 2 * pairs < w) arow[w - 1] = even[pairs];
+  }
+}
+
 // The cells' rows, written (each cell by one run of blocks: assigned, not
 // added): the octave of spacing 1 (every cell a node, the spline its value,
 // uniform from a 32-bit hash: the 64-bit one cost 40 instructions a cell, on
 // up to every cell of a raster), times `weight0`, plus the samples (when
-// `s` is not null) interpolated at every cell, times the amplitude, at the
-// masked cells (+0.0 elsewhere). The samples are interpolated along rows
-// first, each row of samples at every cell of the width, then along columns.
-// Every loop is branch-free so that it vectorises: a row's midpoints are
-// computed for all its samples, then interleaved with them; the mask is a
-// bit mask (masked).
+// `s` is not null) interpolated along rows, then along columns, times the
+// amplitude, at the masked cells (+0.0 elsewhere: a bit mask, `masked`).
 MCMD_AVX2_CLONES
 void write_cells(std::uint64_t seed, double weight0, const OctaveCells& c, const Samples* s, OctaveBuffers& b) {
   const int w = c.width();
   const int nsy = s ? s->rows() : 0, nsx = s ? s->columns() : 0;
   b.scratch.resize(static_cast<std::size_t>(nsy) * w + static_cast<std::size_t>(nsx) + static_cast<std::size_t>(w));
   double* across = b.scratch.data();                          // nsy rows of w
-  double* mid = across + static_cast<std::size_t>(nsy) * w;   // mid[k]: halfway between samples k and k + 1
+  double* mid = across + static_cast<std::size_t>(nsy) * w;   // nsx: interpolate_along_rows' scratch
   double* v = mid + nsx;                                      // a row's noise
-  if (s) {
-    // Cell i of a row is sample first + i / 2 (even raster column, i even) or
-    // the midpoint after it, with parity p = gx0's parity shifting i by one.
-    const int p = static_cast<int>(c.gx0 & 1);
-    const long long first = floor_half(c.gx0) - s->sx.k0;  // the sample at or left of gx0
-    for (int r = 0; r < nsy; ++r) {
-      const double* srow = s->values.data() + static_cast<std::size_t>(r) * nsx;
-      double* arow = across + static_cast<std::size_t>(r) * w;
-      for (int k = 1; k + 2 < nsx; ++k) mid[k] = cubic_mid(srow[k - 1], srow[k], srow[k + 1], srow[k + 2]);
-      int i = 0;
-      if (p == 1 && w > 0) arow[i++] = mid[first];  // gx0 odd: a midpoint first
-      const double* even = srow + first + p;         // the sample of cell i (i - p even)
-      const double* odd = mid + first + p;           // the midpoint of cell i + 1
-      const int pairs = (w - i) / 2;
-      for (int q = 0; q < pairs; ++q) {
-        arow[i + 2 * q] = even[q];
-        arow[i + 2 * q + 1] = odd[q];
-      }
-      if (i + 2 * pairs < w) arow[w - 1] = even[pairs];
-    }
-  }
+  if (s) interpolate_along_rows(c, *s, across, mid);
   const CellHash32 hash(octave_seed(seed, 0));
   b.keys.resize(static_cast<std::size_t>(w));
   const std::uint32_t* k = b.keys.data();
