@@ -119,6 +119,7 @@ struct Samples {
   int columns() const { return static_cast<int>(sx.k1 - sx.k0); }
   int rows() const { return static_cast<int>(sy.k1 - sy.k0); }
   double* row(int r) { return values.data() + static_cast<std::size_t>(r) * columns(); }
+  const double* row(int r) const { return values.data() + static_cast<std::size_t>(r) * columns(); }
   // Zeroed samples for the cells of c.
   void reset(const OctaveCells& c) {
     sx = samples_for(c.gx0, c.gx1);
@@ -152,7 +153,7 @@ void interpolate_along_rows(const OctaveCells& c, const Samples& s, double* acro
   const int p = static_cast<int>(c.gx0 & 1);
   const long long first = floor_half(c.gx0) - s.sx.k0;  // the sample at or left of gx0
   for (int r = 0; r < s.rows(); ++r) {
-    const double* srow = s.values.data() + static_cast<std::size_t>(r) * nsx;
+    const double* srow = s.row(r);
     double* arow = across + static_cast<std::size_t>(r) * w;
     for (int k = 1; k + 2 < nsx; ++k) mid[k] = cubic_mid(srow[k - 1], srow[k], srow[k + 1], srow[k + 2]);
     int i = 0;
@@ -171,11 +172,11 @@ void interpolate_along_rows(const OctaveCells& c, const Samples& s, double* acro
 // The cells' rows, written (each cell by one run of blocks: assigned, not
 // added): the octave of spacing 1 (every cell a node, the spline its value,
 // uniform from a 32-bit hash: the 64-bit one cost 40 instructions a cell, on
-// up to every cell of a raster), times `weight0`, plus the samples (when
+// up to every cell of a raster; its weight 2^(0·H) is 1), plus the samples (when
 // `s` is not null) interpolated along rows, then along columns, times the
 // amplitude, at the masked cells (+0.0 elsewhere: a bit mask, `masked`).
 MCMD_AVX2_CLONES
-void write_cells(std::uint64_t seed, double weight0, const OctaveCells& c, const Samples* s, OctaveBuffers& b) {
+void write_cells(std::uint64_t seed, const OctaveCells& c, const Samples* s, OctaveBuffers& b) {
   const int w = c.width();
   const int nsy = s ? s->rows() : 0, nsx = s ? s->columns() : 0;
   b.scratch.resize(static_cast<std::size_t>(nsy) * w + static_cast<std::size_t>(nsx) + static_cast<std::size_t>(w));
@@ -187,7 +188,7 @@ void write_cells(std::uint64_t seed, double weight0, const OctaveCells& c, const
   b.keys.resize(static_cast<std::size_t>(w));
   const std::uint32_t* k = b.keys.data();
   for (int i = 0; i < w; ++i) b.keys[i] = hash.column(c.gx0 + i);
-  const double unit = weight0 * std::sqrt(3.0) * 0x1p-31;  // uniform in [-√3, √3): unit variance
+  const double unit = std::sqrt(3.0) * 0x1p-31;  // uniform in [-√3, √3): unit variance
   AmplitudeRows amplitude(*c.amplitude, static_cast<int>(c.gx0 - c.fx), static_cast<int>(c.gx1 - c.fx));
   for (long long gy = c.gy0; gy < c.gy1; ++gy) {
     const std::uint32_t row = hash.row(gy);
@@ -334,7 +335,7 @@ void add_noise(const RoughField& g, const Area& a, const Blocks& blocks, const s
                               out.data() + a.index(r.x0, r.y0), a.w, &amplitude, g.x0, g.y0};
       if (octaves > 1) samples.reset(cells);  // spacings of 2 and more are summed there
       for (int j = 1; j < octaves; ++j) add_octave(seed, j, std::exp2(j * H), samples, buffers);
-      write_cells(seed, 1.0, cells, octaves > 1 ? &samples : nullptr, buffers);
+      write_cells(seed, cells, octaves > 1 ? &samples : nullptr, buffers);
     }
   }
 }
