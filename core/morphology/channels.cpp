@@ -133,6 +133,11 @@ class Router {
     for (std::size_t i = 0; i < river_.size(); ++i)
       if (f.own[i]) cost_[i] = std::exp(kCostSteepness * std::min(1.0, (f.z[i] - lo) / range));
     on_river_.assign(river_.size(), 0);
+    // River lines the user gave are channels already: a routed path that
+    // meets one joins it, and their heights stay theirs.
+    given_.assign(river_.size(), 0);
+    for (std::size_t i = 0; i < river_.size(); ++i)
+      if (f.own[i] && f.state[i] == CellState::river) given_[i] = on_river_[i] = 1, river_[i] = f.z[i];
   }
 
   // Routes `from` (a rim cell) to `to` (a rim cell), stopping at a river cell.
@@ -155,7 +160,7 @@ class Router {
   std::vector<RiverCell> cells() const {
     std::vector<RiverCell> out;
     for (std::size_t i = 0; i < river_.size(); ++i)
-      if (on_river_[i]) out.push_back({static_cast<std::int32_t>(i), river_[i]});
+      if (on_river_[i] && !given_[i]) out.push_back({static_cast<std::int32_t>(i), river_[i]});
     return out;
   }
 
@@ -218,6 +223,7 @@ class Router {
   Geometry g_;
   std::vector<double> river_;
   std::vector<std::uint8_t> on_river_;
+  std::vector<std::uint8_t> given_;
   std::vector<double> cost_;
 };
 

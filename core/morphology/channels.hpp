@@ -37,9 +37,10 @@ struct RiverCell {
 // rim (the spill point of a lake there). The path is the least-cost path
 // through the component's cells, a step costing
 // exp(8·(fill − lowest)/(fill's range)) (it keeps to the fill's valley
-// floor), and it ends where it meets a path already routed (a tributary
-// joins). Its heights fall from the inflow's to the
-// outlet's (or the junction's): the mean of a fall that leaves the inflow
+// floor), and it ends where it meets a path already routed or a river cell
+// of the field (a line the user gave: a tributary joins; the line keeps its
+// heights). Its heights fall from the inflow's to the outlet's (or the
+// junction's): the mean of a fall that leaves the inflow
 // between the fill's slope and the straight fall's and arrives at the
 // straight fall's, and the least-squares non-increasing fit of the fill
 // along the path.

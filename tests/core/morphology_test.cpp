@@ -445,6 +445,34 @@ TEST(MorphAuto, AChannelLeavesWhereTheFillDrainsNotAtTheLowestRimCell) {
   }
 }
 
+// Water entering a void where the user's river line starts joins the line:
+// the routed channel neither runs beside the line to an outlet of its own
+// nor rewrites the line's heights.
+TEST(MorphAuto, AChannelJoinsARiverLineTheUserGave) {
+  const int w = 60, h = 60;
+  std::vector<double> z(static_cast<std::size_t>(w) * h);
+  std::vector<CellState> state(z.size(), CellState::known);
+  std::vector<std::uint8_t> own(z.size(), 0);
+  std::vector<double> inflow(z.size(), 0.0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      z[i] = 500.0 - 2.0 * y;  // the smooth fill, in the void: the plane
+      if (x >= 10 && x < 50 && y >= 10 && y < 50) own[i] = 1, state[i] = CellState::unknown;
+      if (own[i] && x == 30) state[i] = CellState::river, z[i] = 480.0 - 2.5 * (y - 10);  // the given line
+    }
+  inflow[static_cast<std::size_t>(9) * w + 30] = 5000.0;
+  inflow[static_cast<std::size_t>(9) * w + 20] = 4000.0;  // a second stream, beside the line
+  const std::vector<morph::RiverCell> river =
+      morph::route_channels(morph::ChannelField{w, h, z.data(), state.data(), own.data(), inflow.data()}, 100.0);
+  for (const morph::RiverCell& r : river) {
+    EXPECT_NE(state[r.cell], CellState::river) << "a line cell rerouted at y " << r.cell / w;
+    EXPECT_NE(r.cell % w, 30);
+  }
+  // The stream at x 20 is routed down the void (the line does not swallow it).
+  EXPECT_TRUE(std::any_of(river.begin(), river.end(), [&](const morph::RiverCell& r) { return r.cell / w == 40; }));
+}
+
 // A plane falling south, and a river drawn across it that the terrain's own
 // slope would not follow.
 double plane(int x, int y) { return 500.0 - 1.0 * y - 0.3 * x; }
