@@ -74,6 +74,7 @@ METHODS = {
                          ["-morph", "auto", "-o", "TILING=ALWAYS"]),
     "gdal": ("gdal -si 2", "gdal", None),
     "ceiling": ("truth-channel ceiling", "ceiling", []),
+    "rivers": ("true channels as -rivers", "rivers", ["-rivers", "<rivers>"]),
 }
 # What a row's command stands for, where it is not plain.
 METHOD_NOTES = {
@@ -82,7 +83,7 @@ METHOD_NOTES = {
 }
 DEFAULT = "mcmd"
 REF = "gdal"
-PICTURED = ("mcmd", "ceiling", "gdal", "mcmd-morph", "mcmd-morph-rs")
+PICTURED = ("mcmd", "ceiling", "gdal", "mcmd-morph", "mcmd-morph-rs", "rivers")
 TIME_LIMIT = 1.5          # -morph auto must stay <= 1.5x the default's time
 
 # Identities of the metric code: valley and ceiling inputs are remade when
@@ -230,6 +231,26 @@ def make_ceiling_input(truth: Truth, removed: np.ndarray, path: str, seed: int) 
 # scoring
 # --------------------------------------------------------------------------
 
+RIVER_REACH = 4   # the river mask: truth-channel cells within this many cells of a void
+
+
+def make_rivers_input(truth: Truth, removed: np.ndarray, inp: str, path: str) -> None:
+    """A -rivers raster mask on the input's grid: the truth's channel cells in
+    and within RIVER_REACH cells of the voids (what a user with a stream
+    network would give; the lines reach known cells on both sides)."""
+    near = F.dilate8(removed)
+    for _ in range(RIVER_REACH - 1):
+        near = F.dilate8(near)
+    mask = (truth.a["channel"] & near).astype(np.uint8)
+    src = gdal.Open(inp)
+    ds = gdal.GetDriverByName("GTiff").Create(path, src.RasterXSize, src.RasterYSize, 1, gdal.GDT_Byte,
+                                              ["COMPRESS=DEFLATE"])
+    ds.SetGeoTransform(src.GetGeoTransform())
+    ds.SetProjection(src.GetProjection())
+    ds.GetRasterBand(1).WriteArray(mask)
+    ds = None
+
+
 def _max_or_none(x):
     return float(np.max(x)) if x.size else None
 
@@ -298,11 +319,11 @@ METRIC_ID = "metric-" + _code_id(Truth, score, V.metrics, V.completeness)
 # main
 # --------------------------------------------------------------------------
 
-def method_cmd(a, m: str, src: str, dst: str, md: int, seed: int) -> list[str]:
+def method_cmd(a, m: str, src: str, dst: str, md: int, seed: int, rivers: str = "") -> list[str]:
     label, typ, args = a.method_table[m]
     if typ == "gdal":
         return V.fill_cmd("gdal-si2", src, dst, md, a.mcmd)
-    args = [x.replace("<seed>", str(seed)) for x in args]
+    args = [x.replace("<seed>", str(seed)).replace("<rivers>", rivers) for x in args]
     return [a.mcmd, "-q"] + args + [src, dst]
 
 
@@ -327,7 +348,8 @@ def main(argv=None):
         elif not ok:
             notes[m] = msg.splitlines()[0]
         else:
-            acc, why = V.mcmd_accepts(a.mcmd, [x.replace("<seed>", "0") for x in args])
+            probe = [x.replace("<seed>", "0") for x in args if x not in ("-rivers", "<rivers>")]
+            acc, why = V.mcmd_accepts(a.mcmd, probe)
             if acc:
                 methods.append(m)
             else:
@@ -380,7 +402,12 @@ def main(argv=None):
         w, h = V.raster_size(inp)
         specs = []
         for m in methods:
-            src, src_r = inp, inr
+            src, src_r, rivers = inp, inr, ""
+            if a.method_table[m][1] == "rivers":
+                if tr is None:
+                    continue       # no truth, no true channels
+                rivers = os.path.join(work, "inputs", c["id"] + "__rivers.tif")
+                make_rivers_input(tr, removed, inp, rivers)
             if a.method_table[m][1] == "ceiling":
                 if tr is None:
                     continue       # no truth, no ceiling
@@ -398,7 +425,7 @@ def main(argv=None):
                 t_metric += time.time() - t0
                 return r
             specs.append((m, V.FillSpec(os.path.join(work, "results", f"{c['id']}__{m}.json"),
-                                        method_cmd(a, m, src, out, max(w, h), c["seed"]),
+                                        method_cmd(a, m, src, out, max(w, h), c["seed"], rivers),
                                         out, a.timeout, evaluate)))
         rs = V.cached_fills([s for _, s in specs], key, force=a.force, log=log, repeat=a.repeat,
                             mem_limit_mb=a.mem_limit_mb or None)
@@ -642,6 +669,10 @@ def write_report(a, cases, methods, notes, results, pngs, version, elapsed):
             cmd = ("`mcmd_fillnodata SRC' DST`, SRC' = SRC with the truth-channel void cells "
                    "given back with their true heights (the ceiling of the metric: a fill that "
                    "knew where the channels are; its time is that of a different input)")
+        elif typ == "rivers":
+            cmd = ("`mcmd_fillnodata -rivers MASK SRC DST`, MASK = a raster mask of the truth's "
+                   f"channel cells in and within {RIVER_REACH} cells of the voids (a fill given the "
+                   "stream network as lines: how well `-rivers` is followed)")
         else:
             cmd = "`mcmd_fillnodata " + " ".join(args + ["SRC", "DST"]) + "`"
             if m in METHOD_NOTES:
@@ -771,7 +802,7 @@ def write_report(a, cases, methods, notes, results, pngs, version, elapsed):
                  "pond m (it includes the tile's own depressions next to its voids, so only "
                  "the differences between methods mean something) · time s.")
         L.append("")
-        rm = [m for m in scored if T[m][1] != "ceiling"]
+        rm = [m for m in scored if T[m][1] not in ("ceiling", "rivers")]
         L.append("| tile | void cells | " + " | ".join(lab(m) for m in rm) + " |")
         L.append("|---|---|" + "---|" * len(rm))
         for c in real:
