@@ -11,16 +11,20 @@
 
 #include "mcmd/params.hpp"
 #include "mcmd/progress.hpp"
+#include "morphology/lines.hpp"
 #include "thin_plate/thin_plate.hpp"
 
 namespace mcmd::morph {
 
 // A line cell of the field (field index), with its height (NaN: the smooth
-// fill's there).
+// fill's there) and, for a river cell whose height is the straight fall
+// along its run, its place on the run: fill_with_morphology then takes the
+// run's heights from its smooth fill instead (channel_heights).
 struct FieldLineCell {
   std::int32_t cell = 0;
   CellState kind = CellState::river;
   double z = 0.0;
+  RunPlace place;
 };
 
 // Half-width, in cells, of the band around a line whose cross-profile the

@@ -198,8 +198,7 @@ class Router {
     return path;
   }
 
-  // Heights from top (path[0]) to bottom (path.back()): the mean of the
-  // fall along the path (fall_shape) and the fill's non-increasing fit.
+  // Heights from top (path[0]) to bottom (path.back()): channel_heights.
   void set_heights(const std::vector<std::int32_t>& path, double top, double bottom) {
     std::vector<double> along(path.size(), 0.0);
     for (std::size_t k = 1; k < path.size(); ++k) along[k] = along[k - 1] + g_.distance(path[k - 1], path[k]);
@@ -207,11 +206,9 @@ class Router {
     for (std::size_t k = 0; k < path.size(); ++k) fill[k] = f_.z[path[k]];
     fill.front() = top;
     fill.back() = bottom;
-    std::vector<double> fit = non_increasing_fit(fill);
-    const double start = start_slope(fill, along, top - bottom);
+    const std::vector<double> heights = channel_heights(fill, along);
     for (std::size_t k = 1; k + 1 < path.size(); ++k) {
-      const double fall = top - (top - bottom) * fall_shape(along[k] / along.back(), start);
-      const double z = 0.5 * (fall + std::clamp(fit[k], bottom, top));
+      const double z = heights[k];
       const std::int32_t c = path[k];
       if (!f_.own[c]) continue;
       river_[c] = on_river_[c] ? std::min(river_[c], z) : z;
@@ -228,6 +225,18 @@ class Router {
 };
 
 }  // namespace
+
+std::vector<double> channel_heights(const std::vector<double>& fill, const std::vector<double>& along) {
+  const double top = fill.front(), bottom = fill.back();
+  const std::vector<double> fit = non_increasing_fit(fill);
+  const double start = start_slope(fill, along, top - bottom);
+  std::vector<double> out = fill;
+  for (std::size_t k = 1; k + 1 < fill.size(); ++k) {
+    const double fall = top - (top - bottom) * fall_shape(along[k] / along.back(), start);
+    out[k] = 0.5 * (fall + std::clamp(fit[k], bottom, top));
+  }
+  return out;
+}
 
 std::vector<double> inflow_into_voids(const double* z, const std::uint8_t* valid, int w, int h) {
   const std::size_t n = static_cast<std::size_t>(w) * h;

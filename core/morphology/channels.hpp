@@ -26,6 +26,17 @@ struct ChannelField {
 // cells. The ChannelField::inflow of a raster. Pre: z, valid hold w·h cells.
 std::vector<double> inflow_into_voids(const double* z, const std::uint8_t* valid, int w, int h);
 
+// The heights of a channel's cells between its two fixed ends: fill[0] is
+// the top's height, fill.back() the bottom's, fill between them the smooth
+// fill's at the cells, `along` their lengths from the top. Each height is
+// the mean of a fall that leaves the top between the fill's slope and the
+// straight fall's and arrives at the straight fall's, and the least-squares
+// non-increasing fit of the fill (which keeps the fill's shape where it
+// already descends and levels a dam where it does not).
+// Pre: fill.size() == along.size() >= 2, fill[0] > fill.back(), along
+// increasing from 0. Post: the ends unchanged; non-increasing, within them.
+std::vector<double> channel_heights(const std::vector<double>& fill, const std::vector<double>& along);
+
 struct RiverCell {
   std::int32_t cell = 0;  // field index
   double z = 0.0;
@@ -40,10 +51,7 @@ struct RiverCell {
 // floor), and it ends where it meets a path already routed or a river cell
 // of the field (a line the user gave: a tributary joins; the line keeps its
 // heights). Its heights fall from the inflow's to the outlet's (or the
-// junction's): the mean of a fall that leaves the inflow
-// between the fill's slope and the straight fall's and arrives at the
-// straight fall's, and the least-squares non-increasing fit of the fill
-// along the path.
+// junction's): channel_heights of the fill along the path.
 // Post: cells are own cells, each once, heights finite; empty when no
 // inflow reaches min_inflow.
 std::vector<RiverCell> route_channels(const ChannelField& f, double min_inflow);

@@ -64,9 +64,10 @@ Known read_cell(const RasterAccess& raster, int x, int y) {
 
 // Heights of the void run cells[b, e) of a traced line: given heights, else
 // the straight change between the known cells before and after the run
-// (by length along the line), else NaN.
+// (by length along the line), else NaN. A run without given heights between
+// two known cells gets each cell's place on it (run number `run`).
 void run_heights(const std::vector<Traced>& cells, std::size_t b, std::size_t e, const Known& before,
-                 const Known& after, std::vector<double>& z) {
+                 const Known& after, int run, std::vector<double>& z, std::vector<RunPlace>& place) {
   std::vector<double> along(e - b + 2, 0.0);  // from the cell before the run
   const auto pos = [&](std::size_t k) -> std::pair<double, double> {
     const std::size_t i = std::min(std::max(k, std::size_t{1}), cells.size()) - 1;
@@ -77,12 +78,14 @@ void run_heights(const std::vector<Traced>& cells, std::size_t b, std::size_t e,
     const auto [x1, y1] = pos(b + k);
     along[k] = along[k - 1] + std::hypot(x1 - x0, y1 - y0);
   }
+  const bool given = std::any_of(cells.begin() + b, cells.begin() + e, [](const Traced& t) { return !std::isnan(t.z); });
   for (std::size_t k = b; k < e; ++k) {
     if (!std::isnan(cells[k].z)) {
       z[k] = cells[k].z;
     } else if (before.valid && after.valid) {
       const double t = along[k - b + 1] / along.back();
       z[k] = before.z + t * (after.z - before.z);
+      if (!given) place[k] = {run, along[k - b + 1], along.back(), before.z, after.z};
     } else {
       z[k] = kNaN;
     }
@@ -99,11 +102,13 @@ std::vector<std::pair<int, int>> trace(const Line& line, int w, int h) {
 
 std::vector<LineCell> line_cells(const RasterAccess& raster) {
   std::map<std::pair<int, int>, LineCell> by_cell;  // (y, x): sorted, the first line's wins
+  int runs = 0;
   for (const Line& line : raster.lines) {
     const std::vector<Traced> cells = trace_with_z(line, raster.width, raster.height);
     std::vector<Known> known(cells.size());
     for (std::size_t k = 0; k < cells.size(); ++k) known[k] = read_cell(raster, cells[k].x, cells[k].y);
     std::vector<double> z(cells.size(), kNaN);
+    std::vector<RunPlace> place(cells.size());
     for (std::size_t b = 0; b < cells.size();) {
       if (known[b].valid) {
         ++b;
@@ -111,9 +116,12 @@ std::vector<LineCell> line_cells(const RasterAccess& raster) {
       }
       std::size_t e = b;
       while (e < cells.size() && !known[e].valid) ++e;
-      run_heights(cells, b, e, b > 0 ? known[b - 1] : Known{}, e < cells.size() ? known[e] : Known{}, z);
+      run_heights(cells, b, e, b > 0 ? known[b - 1] : Known{}, e < cells.size() ? known[e] : Known{}, runs++, z,
+                  place);
       for (std::size_t k = b; k < e; ++k)
-        by_cell.emplace(std::make_pair(cells[k].y, cells[k].x), LineCell{cells[k].x, cells[k].y, line.kind, z[k]});
+        by_cell.emplace(std::make_pair(cells[k].y, cells[k].x),
+                        LineCell{cells[k].x, cells[k].y, line.kind, z[k],
+                                 line.kind == CellState::river ? place[k] : RunPlace{}});
       b = e;
     }
   }

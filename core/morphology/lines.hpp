@@ -17,17 +17,29 @@ namespace mcmd::morph {
 // list with a jump). Pre: w, h >= 1.
 std::vector<std::pair<int, int>> trace(const Line& line, int w, int h);
 
+// Where a river cell lies on its run of void cells, when its height is the
+// straight fall between the known cells at the run's two ends: the default
+// method recomputes such heights from its own fill (channel_fill.hpp).
+struct RunPlace {
+  int run = -1;         // the run's number among all lines; -1: no such run
+  double along = 0.0;   // length along the line from the known cell before the run
+  double length = 0.0;  // from the known cell before to the known cell after
+  double start_z = 0.0, end_z = 0.0;  // the heights of those two known cells
+};
+
 // A void cell on a line: a ridge or river cell of the fill.
 struct LineCell {
   int x = 0, y = 0;
   CellState kind = CellState::river;
   double z = 0.0;  // NaN: from the fill (the run of void cells has a known cell at one end only)
+  RunPlace place;
 };
 
 // The void cells of every line, with heights: the line's own where given,
-// else for each run of void cells along a line the straight fall (rivers)
-// or profile (ridges) between the known cells at its two ends; a run with a
-// known cell at one end or none gets NaN (the fill decides: see
+// else for each run of void cells along a line the straight fall (rivers,
+// with their RunPlace) or profile (ridges) between the known cells at its
+// two ends; a run with a known cell at one end or none gets NaN (the fill
+// decides: see
 // channel_fill.hpp). A cell on several lines takes the first line's.
 // Reads the raster along the lines. Sorted by (y, x).
 std::vector<LineCell> line_cells(const RasterAccess& raster);

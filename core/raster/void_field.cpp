@@ -79,7 +79,7 @@ std::vector<morph::FieldLineCell> line_cells_in(const RasterMorphology& m, const
     const morph::LineCell& c = (*m.lines)[k];
     if (c.x < rect.x0 || c.x > rect.x1) continue;
     const std::int32_t i = (c.y - rect.y0) * rect.width() + (c.x - rect.x0);
-    if (state[i] == CellState::unknown) out.push_back({i, c.kind, c.z});
+    if (state[i] == CellState::unknown) out.push_back({i, c.kind, c.z, c.place});
   }
   return out;
 }

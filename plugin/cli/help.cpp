@@ -105,8 +105,10 @@ Morphology (valleys and ridges through the voids; docs/morphology.md):
   -rivers file     River lines: vector lines in any OGR format (reprojected to
                    the raster's CRS) or a raster mask on the raster's grid
                    (nonzero = river). Where a line crosses a void its cells
-                   fall steadily from where it enters to where it leaves (or
-                   take the lines' Z), and water runs along them.
+                   fall from where it enters to where it leaves, the higher
+                   end to the lower (following the fill's valley floor with
+                   the default method, steadily with a paper method; or the
+                   lines' Z), and water runs along them.
   -ridges file     Ridge lines, likewise: the crest of the fill where they
                    cross a void.
                    With the paper methods, river and ridge cells take their own

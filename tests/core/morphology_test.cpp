@@ -512,6 +512,30 @@ TEST(Lines, ARiverLineIsFollowedThroughTheVoid) {
   EXPECT_LT(plain_near, near / 2);
 }
 
+// A river line down the hanging valley's floor: its cells in the void keep
+// the floor's gentle fall before the step, where the straight fall between
+// the line's known ends cuts far below it.
+TEST(Lines, ARiverLineKeepsAHangingValleysFloorAboveTheStep) {
+  MemoryRaster m = with_disc_void(121, 161, hanging_valley, 60, 84, 22);
+  Line river;
+  river.kind = CellState::river;
+  river.points = {{60.5, 0.5}, {60.5, 160.5}};
+  m.lines = {river};
+  fill_raster(m.access(), FillParams{}, TilingParams{});
+  // The straight fall from the known cell above the void (y 61) to the one
+  // below it (y 107), against the filled line, over the void's rows above
+  // the step (y 62..100).
+  double straight = 0.0, filled = 0.0, previous = 1e300;
+  for (int y = 62; y <= 106; ++y) {
+    const double fall = hanging_floor(61) + (y - 61) / 46.0 * (hanging_floor(107) - hanging_floor(61));
+    if (y <= 100) straight += (hanging_floor(y) - fall) / 39.0, filled += (hanging_floor(y) - m.at(60, y)) / 39.0;
+    EXPECT_LE(m.at(60, y), previous) << "the line rises at y " << y;
+    previous = m.at(60, y);
+  }
+  EXPECT_GT(straight, 30.0);
+  EXPECT_LT(filled, 0.5 * straight) << "straight fall " << straight << " m below the floor";
+}
+
 double ridge(int x, int y) { return 800.0 + 0.5 * y - 4.0 * std::abs(x - 50.0); }
 
 // The crest line bends inside the void (x = 50 outside it, up to 58 in the
