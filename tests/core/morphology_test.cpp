@@ -422,26 +422,42 @@ TEST(MorphAuto, AChannelKeepsAHangingValleysFloorAboveTheStep) {
 // A long narrow void across a plane that falls south and, gently, east:
 // its rim's lowest cell is at the far east end, while water entering from
 // the north crosses the void straight south. The channel must cross too.
+// A w×h field for route_channels: the smooth fill z (known cells and void
+// alike), the void's cells (own, unknown), and the known terrain's inflow.
+struct RoutingField {
+  int w, h;
+  std::vector<double> z;
+  std::vector<CellState> state;
+  std::vector<std::uint8_t> own;
+  std::vector<double> inflow;
+  // z from surface(x, y); the cells where in_void(x, y) are the void.
+  template <class Surface, class InVoid>
+  RoutingField(int w_, int h_, Surface surface, InVoid in_void)
+      : w(w_), h(h_), z(static_cast<std::size_t>(w_) * h_), state(z.size(), CellState::known), own(z.size(), 0),
+        inflow(z.size(), 0.0) {
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        z[index(x, y)] = surface(x, y);
+        if (in_void(x, y)) own[index(x, y)] = 1, state[index(x, y)] = CellState::unknown;
+      }
+  }
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * w + x; }
+  std::vector<morph::RiverCell> route() const {
+    return morph::route_channels(morph::ChannelField{w, h, z.data(), state.data(), own.data(), inflow.data()}, 100.0);
+  }
+};
+
 TEST(MorphAuto, AChannelLeavesWhereTheFillDrainsNotAtTheLowestRimCell) {
-  const int w = 120, h = 40;
-  std::vector<double> z(static_cast<std::size_t>(w) * h);
-  std::vector<CellState> state(z.size(), CellState::known);
-  std::vector<std::uint8_t> own(z.size(), 0);
-  std::vector<double> inflow(z.size(), 0.0);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      z[i] = 500.0 - 2.0 * y - 0.2 * x;  // the smooth fill, in the void: the plane
-      if (y >= 18 && y <= 22 && x >= 5 && x <= 114) own[i] = 1, state[i] = CellState::unknown;
-    }
+  RoutingField f(
+      120, 40, [](int x, int y) { return 500.0 - 2.0 * y - 0.2 * x; },  // the smooth fill, in the void: the plane
+      [](int x, int y) { return y >= 18 && y <= 22 && x >= 5 && x <= 114; });
   const int in_x = 20, in_y = 17;
-  inflow[static_cast<std::size_t>(in_y) * w + in_x] = 5000.0;
-  const std::vector<morph::RiverCell> river =
-      morph::route_channels(morph::ChannelField{w, h, z.data(), state.data(), own.data(), inflow.data()}, 100.0);
+  f.inflow[f.index(in_x, in_y)] = 5000.0;
+  const std::vector<morph::RiverCell> river = f.route();
   ASSERT_FALSE(river.empty());
   for (const morph::RiverCell& r : river) {
-    EXPECT_LE(std::abs(r.cell % w - in_x), 1) << "river cell at x " << r.cell % w;  // not along the void eastwards
-    EXPECT_LT(r.z, z[static_cast<std::size_t>(in_y) * w + in_x]);
+    EXPECT_LE(std::abs(r.cell % f.w - in_x), 1) << "river cell at x " << r.cell % f.w;  // not along the void eastwards
+    EXPECT_LT(r.z, f.z[f.index(in_x, in_y)]);
   }
 }
 
@@ -449,28 +465,20 @@ TEST(MorphAuto, AChannelLeavesWhereTheFillDrainsNotAtTheLowestRimCell) {
 // the routed channel neither runs beside the line to an outlet of its own
 // nor rewrites the line's heights.
 TEST(MorphAuto, AChannelJoinsARiverLineTheUserGave) {
-  const int w = 60, h = 60;
-  std::vector<double> z(static_cast<std::size_t>(w) * h);
-  std::vector<CellState> state(z.size(), CellState::known);
-  std::vector<std::uint8_t> own(z.size(), 0);
-  std::vector<double> inflow(z.size(), 0.0);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      z[i] = 500.0 - 2.0 * y;  // the smooth fill, in the void: the plane
-      if (x >= 10 && x < 50 && y >= 10 && y < 50) own[i] = 1, state[i] = CellState::unknown;
-      if (own[i] && x == 30) state[i] = CellState::river, z[i] = 480.0 - 2.5 * (y - 10);  // the given line
-    }
-  inflow[static_cast<std::size_t>(9) * w + 30] = 5000.0;
-  inflow[static_cast<std::size_t>(9) * w + 20] = 4000.0;  // a second stream, beside the line
-  const std::vector<morph::RiverCell> river =
-      morph::route_channels(morph::ChannelField{w, h, z.data(), state.data(), own.data(), inflow.data()}, 100.0);
+  RoutingField f(
+      60, 60, [](int, int y) { return 500.0 - 2.0 * y; },  // the smooth fill, in the void: the plane
+      [](int x, int y) { return x >= 10 && x < 50 && y >= 10 && y < 50; });
+  for (int y = 10; y < 50; ++y)  // the given line
+    f.state[f.index(30, y)] = CellState::river, f.z[f.index(30, y)] = 480.0 - 2.5 * (y - 10);
+  f.inflow[f.index(30, 9)] = 5000.0;
+  f.inflow[f.index(20, 9)] = 4000.0;  // a second stream, beside the line
+  const std::vector<morph::RiverCell> river = f.route();
   for (const morph::RiverCell& r : river) {
-    EXPECT_NE(state[r.cell], CellState::river) << "a line cell rerouted at y " << r.cell / w;
-    EXPECT_NE(r.cell % w, 30);
+    EXPECT_NE(f.state[r.cell], CellState::river) << "a line cell rerouted at y " << r.cell / f.w;
+    EXPECT_NE(r.cell % f.w, 30);
   }
   // The stream at x 20 is routed down the void (the line does not swallow it).
-  EXPECT_TRUE(std::any_of(river.begin(), river.end(), [&](const morph::RiverCell& r) { return r.cell / w == 40; }));
+  EXPECT_TRUE(std::any_of(river.begin(), river.end(), [&](const morph::RiverCell& r) { return r.cell / f.w == 40; }));
 }
 
 // A plane falling south, and a river drawn across it that the terrain's own
