@@ -32,12 +32,17 @@ LAYERS = {
     "core/morphology": 5,
     "core/raster": 6,
     "core/raster/tiles": 6,
-    "core/terrain": 7,
-    "plugin/lib/include": 8,
-    "plugin/lib": 9,
-    "plugin/cli": 10,
-    "plugin/terrain": 10,
-    "python/src": 11,
+    "core/terrain/methods": 7,
+    "core/terrain/skeleton": 7,
+    "core/terrain/constraints": 7,
+    "core/terrain/erosion": 7,
+    "core/terrain/finishing": 7,
+    "core/terrain": 8,
+    "plugin/lib/include": 9,
+    "plugin/lib": 10,
+    "plugin/cli": 11,
+    "plugin/terrain": 11,
+    "python/src": 12,
 }
 PUBLIC = {"core/include/mcmd", "plugin/lib/include"}
 # Where a quoted include is looked for, per top folder (first match wins).

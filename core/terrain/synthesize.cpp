@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "mcmd/terrain.hpp"
-#include "terrain/paper_terrain.hpp"
-#include "terrain/plate_terrain.hpp"
+#include "terrain/methods/paper_terrain.hpp"
+#include "terrain/methods/plate_terrain.hpp"
 
 namespace mcmd {
 

@@ -1,4 +1,4 @@
-#include "terrain/displacement.hpp"
+#include "terrain/methods/displacement.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "common/distance.hpp"
-#include "terrain/fbm.hpp"
+#include "terrain/methods/fbm.hpp"
 
 namespace mcmd::terrain {
 

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "terrain/ridge_particles.hpp"
+#include "terrain/skeleton/ridge_particles.hpp"
 
 namespace mcmd::terrain {
 

@@ -1,4 +1,4 @@
-#include "terrain/paper_terrain.hpp"
+#include "terrain/methods/paper_terrain.hpp"
 
 #include <bit>
 #include <vector>
@@ -6,7 +6,7 @@
 #include "common/grid.hpp"
 #include "paper/mdbu.hpp"
 #include "paper/midpoint_displacement.hpp"
-#include "terrain/mdi.hpp"
+#include "terrain/methods/mdi.hpp"
 
 namespace mcmd::terrain {
 

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "terrain/ridge_particles.hpp"
-#include "terrain/ridge_relief.hpp"
-#include "terrain/river_particles.hpp"
+#include "terrain/skeleton/ridge_particles.hpp"
+#include "terrain/skeleton/ridge_relief.hpp"
+#include "terrain/skeleton/river_particles.hpp"
 
 namespace mcmd {
 

@@ -1,4 +1,4 @@
-#include "terrain/river_particles.hpp"
+#include "terrain/skeleton/river_particles.hpp"
 
 #include <algorithm>
 #include <cmath>

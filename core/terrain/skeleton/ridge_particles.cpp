@@ -1,10 +1,10 @@
-#include "terrain/ridge_particles.hpp"
+#include "terrain/skeleton/ridge_particles.hpp"
 
 #include <cmath>
 #include <numbers>
 
 #include "roughness/noise.hpp"
-#include "terrain/fbm_path.hpp"
+#include "terrain/skeleton/fbm_path.hpp"
 
 namespace mcmd::terrain {
 

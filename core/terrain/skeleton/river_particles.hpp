@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "terrain/ridge_particles.hpp"
-#include "terrain/ridge_relief.hpp"
+#include "terrain/skeleton/ridge_particles.hpp"
+#include "terrain/skeleton/ridge_relief.hpp"
 
 namespace mcmd::terrain {
 

@@ -1,4 +1,4 @@
-#include "terrain/fbm.hpp"
+#include "terrain/methods/fbm.hpp"
 
 #include <cmath>
 

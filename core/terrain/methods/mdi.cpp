@@ -1,4 +1,4 @@
-#include "terrain/mdi.hpp"
+#include "terrain/methods/mdi.hpp"
 
 #include <cmath>
 #include <unordered_map>

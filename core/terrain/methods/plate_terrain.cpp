@@ -1,8 +1,8 @@
-#include "terrain/plate_terrain.hpp"
+#include "terrain/methods/plate_terrain.hpp"
 
 #include <vector>
 
-#include "terrain/displacement.hpp"
+#include "terrain/methods/displacement.hpp"
 #include "thin_plate/thin_plate.hpp"
 
 namespace mcmd::terrain {

@@ -1,4 +1,4 @@
-#include "terrain/fbm_path.hpp"
+#include "terrain/skeleton/fbm_path.hpp"
 
 #include <cmath>
 

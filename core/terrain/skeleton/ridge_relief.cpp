@@ -1,4 +1,4 @@
-#include "terrain/ridge_relief.hpp"
+#include "terrain/skeleton/ridge_relief.hpp"
 
 #include <algorithm>
 #include <cmath>
