@@ -73,6 +73,21 @@ void set_active(const std::string& folder, bool active) {
     g_active.erase(std::remove(g_active.begin(), g_active.end(), folder), g_active.end());
 }
 
+bool is_active(const std::string& folder) {
+  const std::lock_guard lock(g_active_mutex);
+  return std::find(g_active.begin(), g_active.end(), folder) != g_active.end();
+}
+
+// <stem>.mcmd-tmp-<pid>, or with .2, .3, ... when an output of this process
+// with the same stem is being written (-hillshade t.png beside t.tif).
+std::string free_folder(const std::string& dst) {
+  const std::string base = in_folder(folder_of(dst), CPLGetBasename(dst.c_str()) + std::string(kTempTag) +
+                                                          std::to_string(::getpid()));
+  std::string folder = base;
+  for (int n = 2; is_active(folder); ++n) folder = base + "." + std::to_string(n);
+  return folder;
+}
+
 void move(const std::string& from, const std::string& to) {
   errno = 0;
   if (VSIRename(from.c_str(), to.c_str()) != 0)
@@ -94,17 +109,14 @@ void remove_active_temporaries() {
 
 void remove_stale_temporaries(const std::string& dst) {
   const auto remove_if_gone = [](const std::string& path, long pid) {
-    if (gone(pid)) remove_tree(path);
+    if (gone(pid) && !is_active(path)) remove_tree(path);
   };
   for_each_temporary(dst, remove_if_gone);
   for_each_temporary(dst + ".work.tif", remove_if_gone);  // earlier versions' work files
 }
 
 TempOutput::TempOutput(std::string dst)
-    : dst_(std::move(dst)),
-      folder_(in_folder(folder_of(dst_), CPLGetBasename(dst_.c_str()) + std::string(kTempTag) +
-                                              std::to_string(::getpid()))),
-      tmp_(in_folder(folder_, CPLGetFilename(dst_.c_str()))) {
+    : dst_(std::move(dst)), folder_(free_folder(dst_)), tmp_(in_folder(folder_, CPLGetFilename(dst_.c_str()))) {
   remove_tree(folder_);  // our id's, from an earlier process
   errno = 0;
   if (VSIMkdir(folder_.c_str(), 0755) != 0)

@@ -7,7 +7,8 @@
 // Naming: dst_file <dir>/<stem>.<ext> is written in the folder
 // <dir>/<stem>.mcmd-tmp-<pid>/ (pid: the writing process), as
 // <stem>.<ext>, beside the work file <stem>.work.tif of a format filled
-// through one. The folder is removed at the end in every case but a kill
+// through one; a second output of the same process and stem (mcmd_terrain's
+// -hillshade t.png beside t.tif) gets <stem>.mcmd-tmp-<pid>.2/. The folder is removed at the end in every case but a kill
 // (SIGKILL, power loss): the next run writing the same dst_file removes it.
 #pragma once
 
@@ -17,7 +18,8 @@ namespace mcmd::cli {
 
 // Removes the temporary folders of dst (named as above; also files named
 // <stem>.mcmd-tmp-<pid>.*, and <stem>.<ext>.work.mcmd-tmp-<pid>.*, which
-// earlier versions wrote) whose process no longer exists on this machine.
+// earlier versions wrote) whose process no longer exists on this machine,
+// never those of this process's TempOutputs.
 void remove_stale_temporaries(const std::string& dst);
 
 // Whether a TempOutput exists (a copy is being written), and removing the

@@ -63,6 +63,8 @@ class FillNodataAlgorithm(ToolAlgorithm):
     # The full help, an HTML page shipped in the plugin (also the help URL).
     HELP_FILE = tool.help_file('fillnodata')
     HELP = tool.read_help(HELP_FILE)
+    RENAMED = RENAMED
+    RENAMED_AS = 'as gdal:fillnodata'
 
     INPUT = 'INPUT'
     BANDS = 'BANDS'
@@ -195,14 +197,6 @@ class FillNodataAlgorithm(ToolAlgorithm):
         ok, message = super().checkParameterValues(parameters, context)
         if not ok:
             return ok, message
-        # qgis_process and scripts pass names QGIS would otherwise drop silently.
-        known = {p.name() for p in self.parameterDefinitions()}
-        for name in parameters:
-            if name not in known:
-                hint = RENAMED.get(name)
-                return False, (self.tr('Unknown parameter {} (use {}, as gdal:fillnodata)').format(name, hint)
-                               if hint else self.tr('Unknown parameter {} (known: {})').format(
-                                   name, ', '.join(sorted(known))))
         rs = self.parameterAsString(parameters, self.RS, context)
         if self.parse_rs(rs) is None:
             return False, self.tr('RS must be "auto" or a number >= 0, not "{}"').format(rs)

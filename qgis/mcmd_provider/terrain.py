@@ -91,6 +91,8 @@ class TerrainAlgorithm(ToolAlgorithm):
     # The full help, an HTML page shipped in the plugin (also the help URL).
     HELP_FILE = tool.help_file('terrain')
     HELP = tool.read_help(HELP_FILE)
+    RENAMED = {'CREATION_OPTIONS': 'OPTIONS'}
+    RENAMED_AS = 'as mcmd:fillnodata and gdal:fillnodata'
 
     SKETCH = 'SKETCH'
     STATES = 'STATES'
@@ -103,7 +105,7 @@ class TerrainAlgorithm(ToolAlgorithm):
     CRS = 'CRS'
     METHOD = 'METHOD'
     RS = 'RS'
-    CREATION_OPTIONS = 'CREATION_OPTIONS'
+    CREATION_OPTIONS = 'OPTIONS'
     EXTRA = 'EXTRA'
     HILLSHADE = 'HILLSHADE'
     OUTPUT = 'OUTPUT'
@@ -260,12 +262,14 @@ class TerrainAlgorithm(ToolAlgorithm):
         folder = os.path.dirname(os.path.abspath(output))
         os.makedirs(folder, exist_ok=True)
         existing = tool.snapshot(folder)
+        shade_existing = tool.snapshot(os.path.dirname(os.path.abspath(hillshade))) if hillshade else None
         try:
             for line in tool.run(args, on_progress=feedback.setProgress, on_info=feedback.pushConsoleInfo,
                                  is_canceled=feedback.isCanceled, tool_name=TERRAIN_TOOL):
                 feedback.reportError(line, False)
         except tool.ToolError as err:
-            for path in tool.remove_outputs(output, existing):
+            for path in tool.remove_outputs(output, existing) + (
+                    tool.remove_outputs(hillshade, shade_existing) if hillshade else []):
                 feedback.pushInfo(self.tr('Removed {}').format(path))
             raise QgsProcessingException(str(err)) from err
         if not os.path.exists(output):

@@ -24,9 +24,26 @@ class ToolAlgorithm(QgsProcessingAlgorithm):
     SHORT_HELP = ''  # the help panel's first sentences
     HELP_FILE = ''   # tool.help_file(name)
     HELP = ''        # tool.read_help(HELP_FILE)
+    RENAMED = {}     # a name of an earlier version -> the parameter that replaced it
+    RENAMED_AS = ''  # whose names the new ones are, for the hint ("as gdal:fillnodata")
 
     def tr(self, string):
         return QCoreApplication.translate(type(self).__name__, string)
+
+    def checkParameterValues(self, parameters, context):  # noqa: N802
+        ok, message = super().checkParameterValues(parameters, context)
+        if not ok:
+            return ok, message
+        # qgis_process and scripts pass names QGIS would otherwise drop silently.
+        known = {p.name() for p in self.parameterDefinitions()}
+        for name in parameters:
+            if name in known:
+                continue
+            hint = self.RENAMED.get(name)
+            if hint:
+                return False, self.tr('Unknown parameter {} (use {}, {})').format(name, hint, self.RENAMED_AS)
+            return False, self.tr('Unknown parameter {} (known: {})').format(name, ', '.join(sorted(known)))
+        return True, ''
 
     def icon(self):
         return QIcon(ICON)

@@ -131,3 +131,21 @@ def test_terrain_error_is_reported_and_nothing_left(qp_env, tmp_path):  # noqa: 
     assert run.returncode != 0
     assert 'elevation units' in run.stdout + run.stderr
     assert os.listdir(folder) == []
+
+
+def test_terrain_hillshade_beside_its_terrain_and_options(qp_env, tmp_path):  # noqa: F811
+    """t.png beside t.tif (the README's first example); OPTIONS as mcmd:fillnodata names it."""
+    from osgeo import gdal
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    folder = tmp_path / 'out'
+    folder.mkdir()
+    run_terrain(qp_env, 'WIDTH=65', 'HEIGHT=65', 'RS=300m', 'SEED=4', 'OPTIONS=COMPRESS=DEFLATE',
+                f'HILLSHADE={folder / "t.png"}', f'OUTPUT={folder / "t.tif"}')
+    assert sorted(os.listdir(folder)) == ['t.png', 't.tif']
+    assert gdal.Open(str(folder / 't.tif')).GetMetadata('IMAGE_STRUCTURE')['COMPRESSION'] == 'DEFLATE'
+    assert gdal.Open(str(folder / 't.png')).RasterXSize == 65
+    bad = run_terrain(qp_env, 'WIDTH=65', 'HEIGHT=65', 'RS=300m', 'CREATION_OPTIONS=COMPRESS=DEFLATE',
+                      f'OUTPUT={folder / "bad.tif"}', check=False)
+    assert bad.returncode != 0
+    assert 'Unknown parameter CREATION_OPTIONS (use OPTIONS' in bad.stdout + bad.stderr
+    assert sorted(os.listdir(folder)) == ['t.png', 't.tif']

@@ -195,6 +195,17 @@ TEST(TerrainCli, ProgressAndHelp) {
   EXPECT_EQ(run_terrain({"--version"}).out.rfind("mcmd_terrain ", 0), 0u);
 }
 
+// The README's first example: t.png and t.tif share the stem, and each is
+// written in its own temporary folder, both moved into place.
+TEST(TerrainCli, HillshadeBesideATerrainOfTheSameStem) {
+  TempDir dir;
+  expect_ok(run_terrain({"-q", "-size", "65", "65", "-rs", "300m", "-seed", "4", "-hillshade", dir.file("t.png"),
+                         dir.file("t.tif")}));
+  EXPECT_EQ(dir.listing(), (std::vector<std::string>{"t.png", "t.tif"}));
+  EXPECT_EQ(read_image(dir.file("t.png")).w, 65);
+  EXPECT_EQ(read_image(dir.file("t.tif")).w, 65);
+}
+
 // -rs in elevation units in mcmd_fillnodata: a flat rim (range 0) gets relief
 // with -rs 20m, none with a fraction of its range.
 TEST(TerrainCli, FillnodataTakesRsInElevationUnits) {
