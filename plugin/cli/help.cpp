@@ -65,16 +65,19 @@ Shape of the fill (what it does to the terrain):
                    (-maxvoid 5000, -maxvoid 5000cells) or an area in m2, km2
                    or ha (-maxvoid 2.5km2; geographic rasters: cell areas at
                    their central latitude). Combines with -md and -inner.
-  -I value         Shape of the top-down interpolation (paper's I, default 0):
-                   0 blends the surrounding terrain evenly; I > 0 favours nearby
-                   cells and gives rounded, bell-like fills; I < 0 favours distant
-                   cells and gives sharper, ridge-like fills. Range [-100, 100].
-  -Ibu value       The same shape for the bottom-up pass that first propagates
-                   the known elevations into the void (paper's I_bu, default 0).
-  -delta form      normalized (default): weighted mean, a fill that does not
-                   depend on the elevation datum (filling z+c gives fill+c).
-                   paper: the paper's formula, which pulls fills towards 0 m
-                   when I != 0.
+  -I value         Paper methods only (-method paper-ds, paper-te; no effect
+                   on the default): shape of the top-down interpolation (the
+                   paper's I, default 0). 0 blends the surrounding terrain
+                   evenly; I > 0 favours nearby cells and gives rounded,
+                   bell-like fills; I < 0 favours distant cells and gives
+                   sharper, ridge-like fills. Range [-100, 100].
+  -Ibu value       Paper methods only: the same shape for the bottom-up pass
+                   that first propagates the known elevations into the void
+                   (the paper's I_bu, default 0).
+  -delta form      Paper methods only. normalized (default): weighted mean, a
+                   fill that does not depend on the elevation datum (filling
+                   z+c gives fill+c). paper: the paper's formula, which pulls
+                   fills towards 0 m when I != 0.
   -rs value|auto   Roughness: amplitude of the random relief added to the fill,
                    as a FRACTION OF THE KNOWN ELEVATION RANGE of the band (0.01 on
                    a DEM spanning 1000 m = about 10 m of relief). 0 (default) = a
@@ -85,8 +88,9 @@ Shape of the fill (what it does to the terrain):
   -H value         Hurst exponent in [0, 1] (default 0.5): how the relief fades
                    from coarse to fine scales. High H = smooth, rolling relief;
                    low H = rugged, noisy relief. Only matters with -rs > 0.
-  -rt value        Bias of the random relief in [-1, 1] (default 0): > 0 raises,
-                   < 0 lowers the filled terrain on average. Only with -rs > 0.
+  -rt value        Paper methods only: bias of the random relief in [-1, 1]
+                   (default 0): > 0 raises, < 0 lowers the filled terrain on
+                   average. Only with -rs > 0.
   -seed n          Seed of the random relief (default 0). The same seed gives
                    bit-identical output; the relief at a cell depends only on
                    (seed, cell position), not on tiling or threads.

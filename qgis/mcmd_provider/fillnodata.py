@@ -19,7 +19,7 @@ from qgis.core import (Qgis,
                        QgsRasterFileWriter)
 
 from . import tool
-from .tool_algorithm import ToolAlgorithm, file_of
+from .tool_algorithm import Progress, ToolAlgorithm, failure, file_of
 
 
 # (CLI value, label) in enum order; the first is the tool's default.
@@ -45,10 +45,12 @@ _INT = QgsProcessingParameterNumber.Integer
 NUMBERS = [
     ('DISTANCE', '-md', 'Maximum distance from known cells to fill, in pixels (0 = unlimited)',
      _DOUBLE, 0.0, 0.0, None, False),
-    ('I', '-I', 'Top-down interpolation shape I', _DOUBLE, 0.0, -100.0, 100.0, True),
-    ('I_BU', '-Ibu', 'Bottom-up interpolation shape I_bu', _DOUBLE, 0.0, -100.0, 100.0, True),
-    ('H', '-H', 'Roughness exponent H (used when RS is not 0)', _DOUBLE, 0.5, 0.0, 1.0, True),
-    ('RT', '-rt', 'Displacement bias rt (used when RS is not 0)', _DOUBLE, 0.0, -1.0, 1.0, True),
+    ('I', '-I', 'Paper methods only: top-down interpolation shape I', _DOUBLE, 0.0, -100.0, 100.0, True),
+    ('I_BU', '-Ibu', 'Paper methods only: bottom-up interpolation shape I_bu', _DOUBLE, 0.0, -100.0, 100.0,
+     True),
+    ('H', '-H', 'Roughness exponent H (used with a numeric RS)', _DOUBLE, 0.5, 0.0, 1.0, True),
+    ('RT', '-rt', 'Paper methods only: displacement bias rt (used when RS is not 0)', _DOUBLE, 0.0, -1.0,
+     1.0, True),
     ('SEED', '-seed', 'Random seed (used when RS is not 0)', _INT, 0, 0, None, True),
     ('TILE_SIZE', '-tile', 'Tile size in pixels, 2^n+1 (0 = automatic)', _INT, 0, 0, None, True),
     ('THREADS', '-threads', 'Number of threads (0 = the tool\'s default)', _INT, 0, 0, 1024, True),
@@ -58,8 +60,8 @@ NUMBERS = [
 class FillNodataAlgorithm(ToolAlgorithm):
     SHORT_HELP = ('Fills nodata voids of a raster (DEM) with Morphologically Constrained Midpoint '
                   'Displacement by running the mcmd_fillnodata tool. Known cells are never changed. '
-                  'RS 0 gives a smooth fill, RS auto or a number adds terrain-like roughness (H, rt, '
-                  'seed); I and I_bu shape how elevations are interpolated into the void.')
+                  'RS 0 gives a smooth fill; RS auto, a number or an amplitude such as 20m adds '
+                  'terrain-like roughness (H, seed).')
     # The full help, an HTML page shipped in the plugin (also the help URL).
     HELP_FILE = tool.help_file('fillnodata')
     HELP = tool.read_help(HELP_FILE)
@@ -68,6 +70,8 @@ class FillNodataAlgorithm(ToolAlgorithm):
 
     INPUT = 'INPUT'
     BANDS = 'BANDS'
+    BAND = 'BAND'              # gdal:fillnodata's name: one band, added to BANDS
+    ITERATIONS = 'ITERATIONS'  # gdal:fillnodata's smoothing passes: not needed, ignored
     MASK = 'MASK_LAYER'
     NO_MASK = 'NO_MASK'
     METHOD = 'METHOD'
@@ -111,6 +115,15 @@ class FillNodataAlgorithm(ToolAlgorithm):
         self.addParameter(QgsProcessingParameterBand(
             self.BANDS, self.tr('Bands to fill (empty: all bands)'), None,
             parentLayerParameterName=self.INPUT, optional=True, allowMultiple=True))
+        # Hidden: accepted so that models and scripts made with gdal:fillnodata run as they are.
+        band = QgsProcessingParameterBand(self.BAND, self.tr('Band to fill (as gdal:fillnodata)'), None,
+                                          parentLayerParameterName=self.INPUT, optional=True)
+        iterations = QgsProcessingParameterNumber(
+            self.ITERATIONS, self.tr('Smoothing iterations (as gdal:fillnodata; not needed, ignored)'),
+            type=QgsProcessingParameterNumber.Integer, defaultValue=0, minValue=0)
+        for param in (band, iterations):
+            param.setFlags(param.flags() | QgsProcessingParameterDefinition.FlagHidden)
+            self.addParameter(param)
         self.addParameter(QgsProcessingParameterRasterLayer(
             self.MASK, self.tr('Validity mask (0 = void to fill)'), optional=True))
         no_mask = QgsProcessingParameterBoolean(
@@ -135,7 +148,7 @@ class FillNodataAlgorithm(ToolAlgorithm):
             self.addParameter(param)
             if name == 'I_BU':
                 delta = QgsProcessingParameterEnum(
-                    self.DELTA, self.tr('Δ form (how parents are averaged)'),
+                    self.DELTA, self.tr('Paper methods only: Δ form (how parents are averaged)'),
                     options=[self.tr(label) for _, label in DELTA_FORMS], defaultValue=0)
                 delta.setFlags(delta.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
                 self.addParameter(delta)
@@ -179,19 +192,25 @@ class FillNodataAlgorithm(ToolAlgorithm):
 
     @staticmethod
     def parse_rs(text):
-        """'auto' or a finite number >= 0, as the CLI spells it; None when invalid."""
+        """'auto', a finite number >= 0 or one with the suffix m (an amplitude in elevation
+        units: 20m), as the CLI spells it; None when invalid. The CLI checks the ranges."""
         text = (text or '').strip()
         if text.lower() == 'auto':
             return 'auto'
         if not text:
             return '0'
+        number = text[:-1].strip() if text[-1] in 'mM' else text
         try:
-            value = float(text)
+            value = float(number)
         except ValueError:
             return None
         if not math.isfinite(value) or value < 0:
             return None
-        return text
+        return number + 'm' if number != text else text
+
+    @staticmethod
+    def rs_is_zero(rs):
+        return rs != 'auto' and float(rs.rstrip('m')) == 0.0
 
     def checkParameterValues(self, parameters, context):  # noqa: N802
         ok, message = super().checkParameterValues(parameters, context)
@@ -199,7 +218,8 @@ class FillNodataAlgorithm(ToolAlgorithm):
             return ok, message
         rs = self.parameterAsString(parameters, self.RS, context)
         if self.parse_rs(rs) is None:
-            return False, self.tr('RS must be "auto" or a number >= 0, not "{}"').format(rs)
+            return False, self.tr('RS must be "auto", a number >= 0 or an amplitude in elevation units '
+                                  '(e.g. 20m), not "{}"').format(rs)
         tile = self.parameterAsInt(parameters, 'TILE_SIZE', context)
         if tile and (tile < 3 or (tile - 1) & (tile - 2)):
             return False, self.tr('Tile size must be 0 (automatic) or 2^n+1 (e.g. 257, 1025, '
@@ -228,6 +248,9 @@ class FillNodataAlgorithm(ToolAlgorithm):
         args = [executable]
 
         bands = self.parameterAsInts(parameters, self.BANDS, context)
+        if parameters.get(self.BAND) not in (None, ''):
+            band = self.parameterAsInt(parameters, self.BAND, context)
+            bands += [] if band in bands else [band]
         for band in bands:
             if band < 1 or band > layer.bandCount():
                 raise QgsProcessingException(self.tr(
@@ -259,8 +282,8 @@ class FillNodataAlgorithm(ToolAlgorithm):
             if name == 'DISTANCE':
                 rs = self.parse_rs(self.parameterAsString(parameters, self.RS, context))
                 if rs is None:
-                    raise QgsProcessingException(self.tr('RS must be "auto" or a number >= 0'))
-                if rs == 'auto' or float(rs) != 0.0:
+                    raise QgsProcessingException(self.tr('RS must be "auto", a number >= 0 or e.g. 20m'))
+                if not self.rs_is_zero(rs):
                     args += ['-rs', rs]
                 second = self.parameterAsRasterLayer(parameters, self.FILL_FROM, context)
                 if second is not None:
@@ -326,9 +349,15 @@ class FillNodataAlgorithm(ToolAlgorithm):
             else:  # pragma: no cover (QGIS < 3.16)
                 feedback.reportError(line, False)
 
+        iterations = self.parameterAsInt(parameters, self.ITERATIONS, context)
+        if iterations:
+            warn(self.tr('ITERATIONS={} is ignored: the smoothing passes of gdal:fillnodata are not needed, '
+                         'the fill is smooth and meets the rim without a seam.').format(iterations))
+
+        progress = Progress(feedback)
         try:
             messages = tool.run(args,
-                                on_progress=feedback.setProgress,
+                                on_progress=progress,
                                 on_info=feedback.pushConsoleInfo,
                                 is_canceled=feedback.isCanceled)
         except tool.ToolError as err:
@@ -338,7 +367,7 @@ class FillNodataAlgorithm(ToolAlgorithm):
             removed = tool.remove_outputs(output, before)
             for path in removed:
                 feedback.pushInfo(self.tr('Removed {}').format(path))
-            raise QgsProcessingException(str(err)) from err
+            raise failure(str(err), feedback, progress) from err
         for line in messages:
             warn(line)
         if not os.path.exists(output):

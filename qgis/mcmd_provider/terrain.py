@@ -27,7 +27,7 @@ from qgis.core import (Qgis,
                        QgsRasterFileWriter)
 
 from . import tool
-from .tool_algorithm import ToolAlgorithm, file_of
+from .tool_algorithm import Progress, ToolAlgorithm, failure, file_of
 
 TERRAIN_TOOL = 'mcmd_terrain'
 
@@ -263,15 +263,16 @@ class TerrainAlgorithm(ToolAlgorithm):
         os.makedirs(folder, exist_ok=True)
         existing = tool.snapshot(folder)
         shade_existing = tool.snapshot(os.path.dirname(os.path.abspath(hillshade))) if hillshade else None
+        progress = Progress(feedback)
         try:
-            for line in tool.run(args, on_progress=feedback.setProgress, on_info=feedback.pushConsoleInfo,
+            for line in tool.run(args, on_progress=progress, on_info=feedback.pushConsoleInfo,
                                  is_canceled=feedback.isCanceled, tool_name=TERRAIN_TOOL):
-                feedback.reportError(line, False)
+                feedback.pushWarning(line)
         except tool.ToolError as err:
             for path in tool.remove_outputs(output, existing) + (
                     tool.remove_outputs(hillshade, shade_existing) if hillshade else []):
                 feedback.pushInfo(self.tr('Removed {}').format(path))
-            raise QgsProcessingException(str(err)) from err
+            raise failure(str(err), feedback, progress) from err
         if not os.path.exists(output):
             raise QgsProcessingException(self.tr('mcmd_terrain wrote no output at {}').format(output))
         feedback.setProgress(100)

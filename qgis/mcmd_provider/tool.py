@@ -6,6 +6,7 @@ cancellation and error reporting.
 """
 
 import configparser
+import html
 import os
 import queue
 import re
@@ -104,9 +105,9 @@ class ProgressParser:
 
     Fed arbitrary chunks of stdout (the tool flushes after every dot, without
     newlines), it reports each new percentage through `on_progress`; any other
-    text is collected into lines and given to `on_text`, and so is the
-    finished progress line when `echo_progress` is set (the command's output
-    as a log shows it).
+    text is collected into lines and given to `on_text`, and so is a finished
+    progress line ("... - done.") when `echo_progress` is set (the command's
+    output as a log shows it).
     """
 
     def __init__(self, on_progress, on_text=None, echo_progress=False):
@@ -156,7 +157,10 @@ class ProgressParser:
         self._emit(line)
 
     def _emit(self, line):
-        if line and self.on_text and (self.echo_progress or not _is_progress_text(line)):
+        # A bar is echoed only finished: one cut short by a failure would run on
+        # after the progress bar qgis_process draws.
+        finished_bar = self.echo_progress and line.endswith('done.')
+        if line and self.on_text and (finished_bar or not _is_progress_text(line)):
             self.on_text(line)
 
 
@@ -198,6 +202,8 @@ def run(args, on_progress=None, on_info=None, is_canceled=None, poll_s=0.05, too
 
     `on_progress(percent)`, `on_info(line)` and `is_canceled()` are called from
     the calling thread only. On cancel the process is terminated (then killed).
+    The tool's stdout is echoed line by line to `on_info`, its progress bar
+    only when finished.
     `tool_name` names the tool in messages (its errors start with '<name>: error:').
     """
     creationflags = 0
@@ -306,9 +312,22 @@ def help_file(name):
 
 
 def read_help(path):
-    """The body of a help page, as Processing's help panel shows it."""
+    """A help page as plain text: one paragraph a line.
+
+    QGIS shows shortHelpString() twice: the dialog's panel wraps each line in
+    <p> under its own title, qgis_process help prints it as it is. Plain
+    lines read well in both; the page itself (with its markup) is the help URL.
+    Headings and the page's title are dropped (both show the algorithm's name),
+    a <dt>term</dt><dd>text</dd> becomes "term: text".
+    """
     with open(path, encoding='utf-8') as f:
         text = f.read()
     start, end = text.find('<body>'), text.rfind('</body>')
-    return text[start + len('<body>'):end].strip() if start >= 0 and end > start else text
+    if start >= 0 and end > start:
+        text = text[start + len('<body>'):end]
+    text = re.sub(r'<h2>.*?</h2>', '', text, flags=re.S)
+    text = re.sub(r'</dt>\s*<dd>', ': ', text)
+    blocks = re.split(r'</?(?:p|dl|dt|dd|h[1-6]|ul|ol|li|br)\s*/?>', text)
+    lines = [' '.join(html.unescape(re.sub(r'<[^>]+>', '', block)).split()) for block in blocks]
+    return '\n'.join(line for line in lines if line)
 

@@ -4,7 +4,7 @@ dialog's panel and behind its Help button."""
 
 import os
 
-from qgis.core import QgsProcessingAlgorithm, QgsProcessingException
+from qgis.core import QgsApplication, QgsProcessingAlgorithm, QgsProcessingException
 from qgis.PyQt.QtCore import QCoreApplication, QUrl
 from qgis.PyQt.QtGui import QIcon
 
@@ -18,6 +18,38 @@ def file_of(layer, what):
         raise QgsProcessingException(f'The {what} layer must be a file (its source is "{layer.source()}"); '
                                      'save it to a file first.')
     return path
+
+
+class Progress:
+    """feedback.setProgress, remembering whether a progress bar is open (begun, not at 100)."""
+
+    def __init__(self, feedback):
+        self.feedback = feedback
+        self.percent = None
+
+    def __call__(self, percent):
+        self.percent = percent
+        self.feedback.setProgress(percent)
+
+    def open(self):
+        return self.percent is not None and self.percent < 100
+
+
+def failure(message, feedback, progress):
+    """The QgsProcessingException that ends a failed run, `message` its one line.
+
+    qgis_process draws the progress bar on stdout without ending its line until
+    100: a bar cut short is ended here, or what follows runs on after it. And it
+    prints an algorithm's error three times on stderr: QGIS logs it as Critical
+    (which qgis_process echoes), its console feedback prints "ERROR:" and logs it
+    again. The log is silenced there (the run, and qgis_process, end with this
+    error), leaving the "ERROR:" line. The QGIS application shows each once.
+    """
+    if QgsApplication.platform() == 'qgis_process':
+        if progress.open():
+            feedback.pushConsoleInfo('')
+        QgsApplication.messageLog().blockSignals(True)
+    return QgsProcessingException(message)
 
 
 class ToolAlgorithm(QgsProcessingAlgorithm):
@@ -52,9 +84,9 @@ class ToolAlgorithm(QgsProcessingAlgorithm):
         return ICON
 
     def shortHelpString(self):  # noqa: N802
-        # The whole help: QGIS 3.22 shows only this one, in the dialog's panel and in
-        # qgis_process help (helpString() is shown nowhere).
-        return self.tr(self.SHORT_HELP) + self.tr(self.HELP)
+        # The whole help, as plain lines (tool.read_help): QGIS 3.22 shows only this
+        # one, in the dialog's panel and in qgis_process help (helpString() nowhere).
+        return self.tr(self.SHORT_HELP) + '\n' + self.tr(self.HELP)
 
     def helpString(self):  # noqa: N802
         return self.tr(self.HELP)

@@ -80,7 +80,9 @@ def test_provider_and_algorithm_registered(qgis_app):
     page = QUrl(alg.helpUrl()).toLocalFile()
     assert page.endswith('mcmd_provider/help/fillnodata.html') and os.path.isfile(page)
     with open(page, encoding='utf-8') as f:
-        assert 'Fill only inner holes' in f.read()
+        assert 'INNER_ONLY, fill only inner holes' in f.read()
+    # The panel's and qgis_process's text: plain lines, no markup.
+    assert '<' not in alg.shortHelpString() and 'INNER_ONLY, fill only inner holes: ' in alg.shortHelpString()
     terrain = QgsApplication.processingRegistry().algorithmById('mcmd:terrain')
     assert os.path.isfile(QUrl(terrain.helpUrl()).toLocalFile())
     names = [p.name() for p in alg.parameterDefinitions()]
@@ -91,6 +93,9 @@ def test_provider_and_algorithm_registered(qgis_app):
                 if p.flags() & QgsProcessingParameterDefinition.FlagAdvanced}
     assert {'I', 'I_BU', 'H', 'RT', 'SEED', 'TILE_SIZE', 'THREADS'} <= advanced
     assert not {'INPUT', 'METHOD', 'RS', 'OUTPUT'} & advanced
+    # gdal:fillnodata's names, accepted but not shown.
+    hidden = {p.name() for p in alg.parameterDefinitions() if p.flags() & QgsProcessingParameterDefinition.FlagHidden}
+    assert hidden == {'BAND', 'ITERATIONS'}
     assert alg.parameterDefinition('METHOD').options()[0].startswith('MCMD')
     assert alg.parameterDefinition('H').defaultValue() == 0.5
     assert alg.parameterDefinition('RS').defaultValue() == '0'
@@ -113,7 +118,8 @@ def test_algorithm_dialog_builds(qgis_app):
     dialog.show()
     qgis_app.processEvents()
     wrappers = dialog.mainWidget().wrappers
-    assert set(wrappers) == {p.name() for p in alg.parameterDefinitions()}
+    shown = {p.name() for p in alg.parameterDefinitions() if not p.flags() & p.FlagHidden}
+    assert set(wrappers) == shown
     assert type(wrappers['OPTIONS']).__name__ == 'RasterOptionsWidgetWrapper'
     dialog.close()
 

@@ -7,6 +7,7 @@ throw-away HOME.
 """
 
 import os
+import re
 import shutil
 import subprocess
 import zipfile
@@ -184,3 +185,78 @@ def test_qgis_process_morphology_and_lines(qp_env, cli, data, tmp_path):
         _, _, [(a, _, _)] = read_bands(out)
         _, _, [(b, _, _)] = read_bands(plain)
         assert a.tobytes() != b.tobytes(), params  # the option reached the fill
+
+
+def test_qgis_process_runs_models_of_gdal_fillnodata(qp_env, cli, data, tmp_path):
+    """BAND and ITERATIONS, as gdal:fillnodata names them, and RS in elevation units."""
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    out, ref = str(tmp_path / 'qp.tif'), str(tmp_path / 'cli.tif')
+    run_cli(cli, ['-q', '-b', '2', '-rs', '20m', data('peaks_2band.tif', 'cli'), ref])
+    run = qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={data("peaks_2band.tif")}', 'BAND=2',
+                       'ITERATIONS=3', 'RS=20m', 'DISTANCE=0', 'NO_MASK=false', 'OPTIONS=', f'OUTPUT={out}')
+    assert_same_raster(out, ref)
+    assert 'ITERATIONS=3 is ignored' in run.stdout + run.stderr
+    assert ' -b 2 ' in run.stdout and ' -rs 20m ' in run.stdout
+
+
+def test_qgis_process_help_is_plain_text(qp_env):
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    for alg in ('mcmd:fillnodata', 'mcmd:terrain'):
+        text = qgis_process(qp_env, 'help', alg).stdout
+        description = text.split('Description')[1].split('Arguments')[0]
+        assert not re.search(r'</?[a-zA-Z][^>]*>|&[a-z]+;', description), description
+        lines = description.splitlines()
+        assert all(len(line) < 2000 for line in lines)
+    text = qgis_process(qp_env, 'help', 'mcmd:fillnodata').stdout
+    assert '\nRS, roughness: 0 (default): a smooth fill.' in text
+    assert '\nI, I_BU, DELTA, RT (paper methods only): ' in text
+    assert 'I: Paper methods only: top-down interpolation shape I' in text
+
+
+def assert_bars_apart(stdout):
+    """Each progress bar (qgis_process's own, the tool's in the log) on a line of its own."""
+    for line in stdout.splitlines():
+        if re.search(r'\d\.\.\.', line):
+            numbers = [int(n) for n in re.findall(r'\d+', line)]
+            assert numbers == sorted(set(numbers)) and numbers[0] == 0, line
+
+
+def test_qgis_process_error_once_and_progress_lines_apart(qp_env, data, tmp_path):
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    bad = qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={data("peaks_int16_geo.tif")}',
+                       'EXTRA=-method no-such-method', f'OUTPUT={tmp_path / "x.tif"}', check=False)
+    assert bad.returncode != 0
+    assert (bad.stdout + bad.stderr).count('METHOD=no-such-method is invalid') == 1, bad.stdout + bad.stderr
+    # A failure after the progress bar began: the bar ends before anything else is said.
+    bad = qgis_process(qp_env, 'run', 'mcmd:terrain', '--', 'WIDTH=65', 'HEIGHT=65', 'RS=0.5',
+                       f'OUTPUT={tmp_path / "t.tif"}', check=False)
+    assert bad.returncode != 0
+    assert (bad.stdout + bad.stderr).count('give it in elevation units') == 1, bad.stdout + bad.stderr
+    assert bad.stdout.rstrip().endswith('0...'), bad.stdout
+    assert_bars_apart(bad.stdout)
+    good = qgis_process(qp_env, 'run', 'mcmd:fillnodata', '--', f'INPUT={data("peaks_int16_geo.tif", "in2")}',
+                        f'OUTPUT={tmp_path / "y.tif"}')
+    assert good.stdout.count('100 - done.') == 2, good.stdout  # qgis_process's bar and the tool's
+    assert_bars_apart(good.stdout)
+
+
+def test_readme_qgis_process_commands_as_written(qp_env, cli, testdata, tmp_path):
+    """The README's qgis_process block, run as written from a clone's root."""
+    with open(os.path.join(REPO, 'README.md'), encoding='utf-8') as f:
+        readme = f.read()
+    blocks = re.findall(r'```sh\n(.*?)```', readme, re.S)
+    block = next(b for b in blocks if 'qgis_process.bin run mcmd:fillnodata' in b)
+    clone = tmp_path / 'clone'
+    (clone / 'testdata').mkdir(parents=True)
+    shutil.copyfile(os.path.join(testdata, 'sample_dem.tif'), clone / 'testdata' / 'sample_dem.tif')
+    os.symlink(os.path.join(REPO, 'qgis'), clone / 'qgis')
+    os.symlink(os.path.dirname(os.path.dirname(cli)), clone / 'build')
+    env = dict(qp_env, PATH=os.environ.get('PATH', '/usr/bin:/bin'))
+    env.pop('QGIS_PLUGINPATH')
+    run = subprocess.run(['bash', '-e', '-c', block], cwd=clone, env=env, capture_output=True, text=True,
+                         timeout=600)
+    assert run.returncode == 0, run.stdout + run.stderr
+    ref = str(tmp_path / 'cli.tif')
+    run_cli(cli, ['-q', '-rs', 'auto', os.path.join(testdata, 'sample_dem.tif'), ref])
+    assert_same_raster(str(clone / 'out' / 'sample_qgis.tif'), ref)
+    assert 'RS, roughness:' in run.stdout  # the help, last
