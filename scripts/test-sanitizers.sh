@@ -42,7 +42,7 @@ for suite in "${suites[@]}"; do
       # domains) and the CLI (the background copy, the cancel watchdog).
       # Not the Python tests: TSan cannot be loaded into a Python built
       # without it (the module's threads are the core's, checked here).
-      ctest --test-dir "$root/build-tsan" --output-on-failure -j"$jobs" -LE "fuzz|qgis|python" -E c_api_installed_package
+      ctest --test-dir "$root/build-tsan" --output-on-failure -j"$jobs" -LE "fuzz|qgis|python" -E "c_api_installed_package|c_api_readme_example"
       ;;
     *) echo "test-sanitizers: unknown suite '$suite' (asan, tsan)" >&2; exit 2 ;;
   esac
