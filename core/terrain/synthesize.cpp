@@ -2,8 +2,11 @@
 // and the dispatch (plate_terrain.hpp, paper_terrain.hpp).
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "mcmd/terrain.hpp"
+#include "terrain/methods/measured_relief.hpp"
 #include "terrain/methods/paper_terrain.hpp"
 #include "terrain/methods/plate_terrain.hpp"
 
@@ -22,7 +25,6 @@ void check_params(const Canvas& c, const TerrainParams& p) {
     if (!std::isfinite(v)) throw std::invalid_argument("terrain parameters must be finite numbers");
   if (f.rs < 0 || f.noise_unit < 0 || p.sharpness < 0)
     throw std::invalid_argument("rs, its unit and the sharpness must be >= 0");
-  if (f.rs_auto) throw std::invalid_argument("rs auto measures known terrain: a terrain is made, give rs");
   for (double z : c.z)
     if (!std::isfinite(z)) throw std::invalid_argument("constraint elevations must be finite numbers");
 }
@@ -37,20 +39,38 @@ double rs_unit(const Canvas& c, const TerrainParams& p) {
       "elevation units instead (e.g. -rs 300m, RS=300m)");
 }
 
+// rs auto: the relief measured from the known cells, as an amplitude in
+// elevation units (and its factor per cell, `scale`).
+FillParams measured(const Canvas& c, const TerrainParams& p, std::vector<double>& scale) {
+  if (p.method != TerrainMethod::mcmd)
+    throw std::invalid_argument("rs auto is measured for the default method (mcmd): give the paper methods a number (e.g. -rs 0.2, RS=0.2)");
+  terrain::MeasuredRelief m = terrain::measure_relief(c, p.fill.seed, p.fill.H, p.threads);
+  FillParams f = p.fill;
+  f.rs_auto = false;
+  f.rs = m.amplitude > 0 ? 1.0 : 0.0;
+  f.noise_unit = m.amplitude;
+  f.H = m.H;
+  scale = std::move(m.scale);
+  return f;
+}
+
 }  // namespace
 
-void synthesize(Canvas& c, const TerrainParams& p, const ProgressFn& progress) {
-  check_params(c, p);
+void synthesize(Canvas& c, const TerrainParams& given, const ProgressFn& progress) {
+  check_params(c, given);
   report(progress, 0.0);
-  if (p.method == TerrainMethod::none || c.count(CellState::unknown) == 0) {
+  if (given.method == TerrainMethod::none || c.count(CellState::unknown) == 0) {
     report(progress, 1.0);
     return;
   }
+  TerrainParams p = given;
+  std::vector<double> relief_scale;
+  if (p.fill.rs_auto) p.fill = measured(c, p, relief_scale);
   const double unit = rs_unit(c, p);
   if (c.constraints() == 0 && p.fill.rs == 0)
     throw std::invalid_argument("no constraint and no roughness: the terrain would be flat (give -rs, RS)");
   if (p.method == TerrainMethod::mcmd)
-    terrain::plate_terrain(c, p, unit, progress);
+    terrain::plate_terrain(c, p, unit, progress, relief_scale);
   else
     terrain::paper_terrain(c, p, unit, progress);
   report(progress, 1.0);

@@ -213,8 +213,6 @@ TerrainOptions parse_terrain_options(CSLConstList options) {
   out.terrain.scheme = scheme;
   out.terrain.sharpness = sharpness;
   out.terrain.threads = fill.num_threads;
-  if (out.terrain.fill.rs_auto)
-    throw OptionError("RS=auto measures the roughness of known terrain: for a terrain give a number, e.g. RS=300m");
   return out;
 }
 

@@ -100,12 +100,15 @@ Synthesis:
   -scheme s        ds (diamond-square, default), te (triangle-edge) or
                    butterfly (the butterfly stencil of Dyn, Levin & Gregory
                    top-down): for -method paper and mdi. -scheme butterfly.
-  -rs value        Roughness. A number: a fraction of the constraints'
+  -rs value|auto   Roughness. A number: a fraction of the constraints'
                    elevation range (-rs 0.5). With m: an amplitude in
                    elevation units, metres on a DEM in metres (-rs 300m),
                    needed from scratch, where there is no range. 0 (default):
                    smooth. For mcmd the amplitude of the coarsest octave, for
-                   the paper methods the paper's rs (eq. 1).
+                   the paper methods the paper's rs (eq. 1). auto (mcmd): H
+                   and amplitude measured from the known cells of a sketch
+                   or of a DEM given to -upsample, whose roughness the made
+                   detail continues: -upsample 4 -rs auto.
   -H value         Hurst exponent in [0, 1] (default 0.7): high = smooth,
                    rolling relief, low = rugged. The paper's figures: -H 0.45.
   -rt value        Bias in [-1, 1] (default 0): > 0 raises, < 0 lowers the
@@ -135,7 +138,7 @@ Examples:
   mcmd_terrain -size 1025 1025 -rs 300m -seed 4 -hillshade t.png t.tif
   mcmd_terrain -zrange 0 2000 -rs 0.2 -states lines.png sketch.png t.tif
   mcmd_terrain -skeleton -size 513 513 -rs 0.5 -method paper-te -Ibu 6 t.tif
-  mcmd_terrain -upsample 4 coarse_dem.tif fine_dem.tif
+  mcmd_terrain -upsample 4 -rs auto coarse_dem.tif fine_dem.tif
 
 Method: F. Belhadj, "Terrain modeling: a constrained fractal model", AFRIGRAPH
 2007, pp. 197-204; F. Belhadj, P. Audibert, "Modeling landscapes with ridges

@@ -154,7 +154,7 @@ class TerrainAlgorithm(ToolAlgorithm):
                                              options=[self.tr(label) for _, label in METHODS],
                                              defaultValue=0))
         self._add(QgsProcessingParameterString(
-            self.RS, self.tr('Roughness RS (a fraction of the range, or e.g. 300m)'), defaultValue='0'))
+            self.RS, self.tr('Roughness RS (a fraction of the range, e.g. 300m, or auto)'), defaultValue='0'))
         for name, _flag, label, kind, default, minimum, maximum, advanced in NUMBERS:
             number = QgsProcessingParameterNumber(name, self.tr(label), type=kind, defaultValue=default)
             if minimum is not None:

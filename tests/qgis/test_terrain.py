@@ -149,3 +149,17 @@ def test_terrain_hillshade_beside_its_terrain_and_options(qp_env, tmp_path):  # 
     assert bad.returncode != 0
     assert 'Unknown parameter CREATION_OPTIONS (use OPTIONS' in bad.stdout + bad.stderr
     assert sorted(os.listdir(folder)) == ['t.png', 't.tif']
+
+
+def test_terrain_upsample_with_rs_auto_like_the_cli(qp_env, terrain_cli, testdata, tmp_path):  # noqa: F811
+    """RS=auto measures a DEM given as the sketch (UPSAMPLE=4), as mcmd_terrain does."""
+    from osgeo import gdal
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    coarse = str(tmp_path / 'coarse.tif')
+    gdal.Translate(coarse, os.path.join(testdata, 'sample_truth.tif'), srcWin=[0, 0, 129, 129])
+    out, ref = str(tmp_path / 'qgis.tif'), str(tmp_path / 'cli.tif')
+    run_terrain(qp_env, f'SKETCH={coarse}', 'UPSAMPLE=4', 'RS=auto', f'OUTPUT={out}')
+    run_cli(terrain_cli, ['-q', '-upsample', '4', '-rs', 'auto', '-of', 'GTiff', coarse, ref])
+    assert_same_raster(out, ref)
+    _, _, [(z, _, _)] = read_bands(out)
+    assert z.shape == (513, 513)

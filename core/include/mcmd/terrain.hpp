@@ -67,9 +67,12 @@ struct TerrainParams {
 };
 
 // Fill every unknown cell of `canvas` by `params.method` (none: nothing).
+// params.fill.rs_auto (mcmd only): the relief's amplitude and H measured from
+// the known cells (terrain/methods/measured_relief.hpp).
 // Post: constraint cells and states unchanged, every elevation finite.
 // Throws std::invalid_argument on bad parameters (a fractional rs with no
-// elevation range to be a fraction of, nothing to make), Cancelled.
+// elevation range to be a fraction of, rs auto with no known terrain to
+// measure, nothing to make), Cancelled.
 void synthesize(Canvas& canvas, const TerrainParams& params, const ProgressFn& progress = {});
 
 // The names used in messages and options.

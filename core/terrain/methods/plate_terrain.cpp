@@ -7,8 +7,10 @@
 
 namespace mcmd::terrain {
 
-void plate_terrain(Canvas& c, const TerrainParams& p, double unit, const ProgressFn& progress) {
-  const std::vector<double> d = terrain_displacement(c, p, unit);
+void plate_terrain(Canvas& c, const TerrainParams& p, double unit, const ProgressFn& progress,
+                   const std::vector<double>& relief_scale) {
+  std::vector<double> d = terrain_displacement(c, p, unit);
+  for (std::size_t i = 0; i < relief_scale.size() && i < d.size(); ++i) d[i] *= relief_scale[i];
   report(progress, 0.2);
   if (c.constraints() == 0) {
     c.z = d;

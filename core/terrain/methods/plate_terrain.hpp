@@ -4,12 +4,17 @@
 // without any constraint the terrain is d itself.
 #pragma once
 
+#include <vector>
+
 #include "mcmd/progress.hpp"
 #include "mcmd/terrain.hpp"
 
 namespace mcmd::terrain {
 
 // Pre: unit > 0 when params.fill.rs > 0. Post: as synthesize().
-void plate_terrain(Canvas& canvas, const TerrainParams& params, double unit, const ProgressFn& progress);
+// `relief_scale`: empty, or a factor of the displacement at every cell (rs
+// auto's, measured_relief.hpp).
+void plate_terrain(Canvas& canvas, const TerrainParams& params, double unit, const ProgressFn& progress,
+                   const std::vector<double>& relief_scale = {});
 
 }  // namespace mcmd::terrain

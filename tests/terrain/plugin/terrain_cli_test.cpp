@@ -206,6 +206,70 @@ TEST(TerrainCli, HillshadeBesideATerrainOfTheSameStem) {
   EXPECT_EQ(read_image(dir.file("t.tif")).w, 65);
 }
 
+// Semivariance at lag 1 (row and column pairs): the roughness at the finest scale.
+double gamma1(const Image& z) {
+  double sum = 0, n = 0;
+  for (int y = 0; y + 1 < z.h; ++y)
+    for (int x = 0; x + 1 < z.w; ++x) {
+      const double dx = z.at(x + 1, y) - z.at(x, y), dy = z.at(x, y + 1) - z.at(x, y);
+      sum += dx * dx + dy * dy, n += 2;
+    }
+  return 0.5 * sum / n;
+}
+
+// -upsample 4 -rs auto: the detail made between a DEM's cells continues its
+// roughness. A real-looking terrain's every 4th cell, supersampled again, has
+// about the original's roughness at the finest scale, nearer than with -rs 0
+// (too smooth); the same bits on one thread.
+TEST(TerrainCli, UpsampleWithRsAutoMeasuresTheDem) {
+  TempDir dir;
+  const Image truth = read_image(std::string(MCMD_TESTDATA_DIR) + "/sample_truth.tif");
+  ASSERT_EQ(truth.w, 257);
+  Image coarse{65, 65, 1, GDT_Float32, {}};
+  for (int y = 0; y < 65; ++y)
+    for (int x = 0; x < 65; ++x) coarse.values.push_back(truth.at(4 * x, 4 * y));
+  write_image(dir.file("coarse.tif"), coarse, "GTiff");
+  expect_ok(run_terrain({"-q", "-upsample", "4", "-rs", "auto", dir.file("coarse.tif"), dir.file("auto.tif")}));
+  expect_ok(run_terrain({"-q", "-upsample", "4", dir.file("coarse.tif"), dir.file("smooth.tif")}));
+  expect_ok(run_terrain({"-q", "-threads", "1", "-upsample", "4", "-rs", "auto", dir.file("coarse.tif"),
+                         dir.file("one.tif")}));
+  EXPECT_EQ(raw_band(dir.file("auto.tif")), raw_band(dir.file("one.tif")));
+  const Image rough = read_image(dir.file("auto.tif")), smooth = read_image(dir.file("smooth.tif"));
+  for (int y = 0; y < 65; ++y)
+    for (int x = 0; x < 65; ++x) ASSERT_EQ(rough.at(4 * x, 4 * y), truth.at(4 * x, 4 * y));
+  const double real = gamma1(truth), made = gamma1(rough);
+  EXPECT_GT(made, 0.75 * real) << made << " against " << real;
+  EXPECT_LT(made, 1.33 * real) << made << " against " << real;
+  EXPECT_LT(std::fabs(std::log(made / real)), std::fabs(std::log(gamma1(smooth) / real)));
+}
+
+// -rs auto around a dense sketch: a 64-cell hole in the real-looking terrain
+// is made about as rough as the terrain it replaced; known cells exact.
+TEST(TerrainCli, RsAutoAroundADenseSketch) {
+  TempDir dir;
+  const Image truth = read_image(std::string(MCMD_TESTDATA_DIR) + "/sample_truth.tif");
+  Image sketch{truth.w, truth.h, 1, GDT_Float32, truth.values};
+  for (int y = 96; y < 160; ++y)
+    for (int x = 96; x < 160; ++x) sketch.values[static_cast<std::size_t>(y) * truth.w + x] = -9999;
+  const double nodata = -9999;
+  write_image(dir.file("sketch.tif"), sketch, "GTiff", 0, nullptr, &nodata);
+  expect_ok(run_terrain({"-q", "-rs", "auto", dir.file("sketch.tif"), dir.file("t.tif")}));
+  const Image t = read_image(dir.file("t.tif"));
+  const auto hole = [](const Image& z) {
+    Image part{56, 56, 1, GDT_Float64, {}};
+    for (int y = 100; y < 156; ++y)
+      for (int x = 100; x < 156; ++x) part.values.push_back(z.at(x, y));
+    return part;
+  };
+  const double real = gamma1(hole(truth)), made = gamma1(hole(t));
+  EXPECT_GT(made, 0.5 * real) << made << " against " << real;
+  EXPECT_LT(made, 2.5 * real) << made << " against " << real;
+  for (std::size_t i = 0; i < sketch.values.size(); ++i) {
+    if (sketch.values[i] == nodata) continue;
+    ASSERT_EQ(t.values[i], truth.values[i]);
+  }
+}
+
 // -rs in elevation units in mcmd_fillnodata: a flat rim (range 0) gets relief
 // with -rs 20m, none with a fraction of its range.
 TEST(TerrainCli, FillnodataTakesRsInElevationUnits) {
