@@ -14,9 +14,9 @@ class Error(RuntimeError): ...
 class Cancelled(Error): ...
 
 def fill(
-    array: npt.ArrayLike,
+    array: Any,  # (rows, columns) or (bands, rows, columns): ndarray, masked array or xarray.DataArray
     mask: npt.ArrayLike | None = ...,
-    nodata: int | float | None = ...,
+    nodata: int | float | Iterable[int | float | None] | None = ...,
     *,
     method: str = ...,
     rs: float | str = ...,
@@ -25,7 +25,7 @@ def fill(
     threads: int | None = ...,
     progress: Progress | None = ...,
     **options: Any,
-) -> np.ndarray: ...
+) -> Any: ...  # the kind of `array` (ndarray, masked array, DataArray), its dtype
 def fill_file(
     src: str | os.PathLike[str],
     dst: str | os.PathLike[str] | None = ...,

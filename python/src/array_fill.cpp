@@ -1,5 +1,6 @@
 #include "array_fill.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "cpl_string.h"
 #include "lib/errors.hpp"
 #include "lib/fill_band.hpp"
+#include "memdataset.h"
 
 namespace mcmd::python {
 
@@ -28,6 +30,38 @@ DatasetPtr wrap(void* cells, GDALDataType type, int width, int height) {
   band_options.SetNameValue("DATAPOINTER", pointer);  // row-major, packed: MEM's default offsets
   if (!ds || ds->AddBand(type, band_options.List()) != CE_None)
     throw gdal::Failure(CPLE_AppDefined, std::string("cannot wrap the array as a raster: ") + CPLGetLastErrorMsg());
+  return ds;
+}
+
+// A MEM band over `cells` that marks in `filled` every cell written to it
+// (the fill writes void cells only, through RasterIO).
+class RecordingBand final : public MEMRasterBand {
+ public:
+  RecordingBand(GDALDataset* ds, GByte* cells, GDALDataType type, bool signed_byte, std::uint8_t* filled)
+      : MEMRasterBand(ds, 1, cells, type, 0, 0, FALSE, signed_byte ? "SIGNEDBYTE" : nullptr), filled_(filled) {}
+
+ protected:
+  CPLErr IRasterIO(GDALRWFlag flag, int x0, int y0, int w, int h, void* data, int buf_w, int buf_h,
+                   GDALDataType buf_type, GSpacing pixel_space, GSpacing line_space,
+                   GDALRasterIOExtraArg* extra) override {
+    if (flag == GF_Write)
+      for (int y = y0; y < y0 + h; ++y)
+        std::fill_n(filled_ + static_cast<std::size_t>(y) * nRasterXSize + x0, w, std::uint8_t{1});
+    return MEMRasterBand::IRasterIO(flag, x0, y0, w, h, data, buf_w, buf_h, buf_type, pixel_space, line_space,
+                                    extra);
+  }
+
+ private:
+  std::uint8_t* filled_;
+};
+
+// A one-band MEM dataset whose band records the cells written (RecordingBand).
+DatasetPtr wrap_recording(void* cells, GDALDataType type, bool signed_byte, int width, int height,
+                          std::uint8_t* filled) {
+  DatasetPtr ds(MEMDataset::Create("", width, height, 0, type, nullptr));
+  if (!ds) throw gdal::Failure(CPLE_AppDefined, std::string("cannot wrap the array as a raster: ") + CPLGetLastErrorMsg());
+  auto* band = new RecordingBand(ds.get(), static_cast<GByte*>(cells), type, signed_byte, filled);
+  static_cast<MEMDataset*>(ds.get())->AddMEMBand(GDALRasterBand::ToHandle(band));
   return ds;
 }
 
@@ -54,8 +88,10 @@ MemoryRaster memory_raster(const char* gdal_type_name, void* cells, int width, i
   return r;
 }
 
-MemoryBand::MemoryBand(const MemoryRaster& raster, const std::uint8_t* valid, const Nodata& nodata) {
-  ds_ = wrap(raster.cells, raster.type, raster.width, raster.height);
+MemoryBand::MemoryBand(const MemoryRaster& raster, const std::uint8_t* valid, const Nodata& nodata,
+                       std::uint8_t* filled) {
+  ds_ = filled ? wrap_recording(raster.cells, raster.type, raster.signed_byte, raster.width, raster.height, filled)
+               : wrap(raster.cells, raster.type, raster.width, raster.height);
   band_ = ds_->GetRasterBand(1);
   if (raster.signed_byte) band_->SetMetadataItem("PIXELTYPE", "SIGNEDBYTE", "IMAGE_STRUCTURE");
   set_nodata(*band_, nodata);
@@ -73,9 +109,9 @@ MemoryBand::~MemoryBand() {
 }
 
 void fill_memory_raster(const MemoryRaster& raster, const std::uint8_t* valid, const Nodata& nodata,
-                        const gdal::Options& options, const ProgressFn& progress) {
+                        const gdal::Options& options, const ProgressFn& progress, std::uint8_t* filled) {
   cli::ErrorLog log;  // GDAL's own messages stay quiet: failures are thrown
-  MemoryBand band(raster, valid, nodata);
+  MemoryBand band(raster, valid, nodata, filled);
   gdal::fill_band(band.band(), band.request(), options, progress);
 }
 

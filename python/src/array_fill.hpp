@@ -32,10 +32,14 @@ MemoryRaster memory_raster(const char* gdal_type_name, void* cells, int width, i
 
 // `raster` as band 1 of a MEM dataset over its cells (not copied), with its
 // nodata value and `valid` (width × height bytes, may be null; 0 = void) as a
-// mask: the band and the request the CLI would fill. Flushes when destroyed.
+// mask: the band and the request the CLI would fill. With `filled` (width ×
+// height bytes, may be null), every cell the fill writes is set to 1 there:
+// what tells a void left unfilled from one filled with its old value.
+// Flushes when destroyed.
 class MemoryBand {
  public:
-  MemoryBand(const MemoryRaster& raster, const std::uint8_t* valid, const Nodata& nodata);
+  MemoryBand(const MemoryRaster& raster, const std::uint8_t* valid, const Nodata& nodata,
+             std::uint8_t* filled = nullptr);
   ~MemoryBand();
   MemoryBand(const MemoryBand&) = delete;
   MemoryBand& operator=(const MemoryBand&) = delete;
@@ -49,9 +53,10 @@ class MemoryBand {
 };
 
 // Fill the voids of `raster` in place: NaN and infinite cells, cells equal to
-// `nodata`, and cells where `valid` (width × height bytes, may be null) is 0.
+// `nodata`, and cells where `valid` (width × height bytes, may be null) is 0;
+// `filled` (may be null) as for MemoryBand.
 // Throws what gdal::fill_band throws (Failure, Cancelled, OptionError...).
 void fill_memory_raster(const MemoryRaster& raster, const std::uint8_t* valid, const Nodata& nodata,
-                        const gdal::Options& options, const ProgressFn& progress);
+                        const gdal::Options& options, const ProgressFn& progress, std::uint8_t* filled = nullptr);
 
 }  // namespace mcmd::python

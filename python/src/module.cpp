@@ -62,13 +62,15 @@ void without_gil(PythonProgress& progress, Fill&& fill) {
 }
 
 void fill_array(py::array out, std::optional<py::array> valid, const std::string& gdal_type, py::object nodata,
-                const std::vector<std::string>& options, py::object callback) {
+                const std::vector<std::string>& options, py::object callback, std::optional<py::array> filled) {
   const MemoryRaster raster = raster_of(out, gdal_type);
   const std::uint8_t* mask = valid_cells(valid, out);
+  std::uint8_t* written = filled ? const_cast<std::uint8_t*>(valid_cells(filled, out)) : nullptr;
+  if (filled && !filled->writeable()) throw std::invalid_argument("fill_array's `filled` must be writeable");
   const Nodata nd = nodata_of(nodata, raster.type);
   const mcmd::gdal::Options parsed = parse_options(options);
   PythonProgress progress(std::move(callback));
-  without_gil(progress, [&] { fill_memory_raster(raster, mask, nd, parsed, progress.as_fn()); });
+  without_gil(progress, [&] { fill_memory_raster(raster, mask, nd, parsed, progress.as_fn(), written); });
 }
 
 void fill_file_(const std::vector<std::string>& flags, const std::string& src, const std::string& dst,
@@ -85,8 +87,9 @@ PYBIND11_MODULE(_mcmd, m) {
   register_exceptions(m);
   m.attr("__version__") = MCMDVersion();
   m.def("fill_array", &fill_array, py::arg("out"), py::arg("valid"), py::arg("gdal_type"), py::arg("nodata"),
-        py::arg("options"), py::arg("progress"),
-        "Fill the voids of `out` (C-contiguous, 2-D, native byte order, of GDAL type `gdal_type`) in place.");
+        py::arg("options"), py::arg("progress"), py::arg("filled") = py::none(),
+        "Fill the voids of `out` (C-contiguous, 2-D, native byte order, of GDAL type `gdal_type`) in place; "
+        "`filled` (uint8 of out's shape, optional) gets 1 at every cell written.");
   m.def("fill_file", &fill_file_, py::arg("flags"), py::arg("src"), py::arg("dst"), py::arg("progress"),
         "Run mcmd_fillnodata's code: `flags` as the CLI takes them, dst '' = in place.");
   register_chunk_fill(m);

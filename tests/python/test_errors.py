@@ -15,16 +15,39 @@ def test_exception_classes():
     assert mcmd.Error.__module__ == "mcmd" and mcmd.Error.__doc__
 
 
-@pytest.mark.parametrize("array", [np.zeros(5), np.zeros((2, 3, 4)), np.float32(1)])
-def test_not_2d(array):
-    with pytest.raises(ValueError, match="expected a 2-D array"):
+@pytest.mark.parametrize("array", [np.zeros(5), np.zeros((2, 3, 4, 5)), np.float32(1)])
+def test_not_2d_or_3d(array):
+    with pytest.raises(ValueError, match=r"expected a 2-D \(rows, columns\) or 3-D \(bands, rows, columns\) array"):
         mcmd.fill(array, nodata=0)
 
 
-@pytest.mark.parametrize("dtype", [np.complex64, np.complex128, np.bool_, np.float16, "U3", object])
+@pytest.mark.parametrize("dtype", [np.complex64, np.complex128, np.bool_, "U3", object])
 def test_unsupported_dtype(dtype):
     with pytest.raises(ValueError, match="is not supported"):
         mcmd.fill(np.zeros((4, 4), dtype), nodata=0)
+
+
+def test_bool_is_refused_as_a_mask():
+    with pytest.raises(ValueError, match="a bool array is a mask, not a raster"):
+        mcmd.fill(np.ones((4, 4), bool), nodata=0)
+
+
+@pytest.mark.parametrize("dtype, nodata", [
+    ("int16", 1200.5), ("int16", 40000), ("int16", 1e10), ("int16", float("nan")), ("int16", float("inf")),
+    ("uint8", -1), ("uint8", 256), ("uint16", -0.5), ("int64", 2**63), ("int64", 0.5),
+])
+def test_nodata_the_dtype_cannot_hold(dtype, nodata):
+    a = np.full((30, 30), 1200, dtype)  # valid cells that a rounded nodata would take for voids
+    a[10:14, 10:14] = 7
+    with pytest.raises(ValueError, match=r"is not an integer in .*'s range .*: the array cannot hold it"):
+        mcmd.fill(a, nodata=nodata)
+
+
+def test_nodata_float16_and_float32_must_hold():
+    with pytest.raises(ValueError, match="not a float16 value"):
+        mcmd.fill(np.zeros((4, 4), np.float16), nodata=-9999)  # float16 holds -10000, not -9999
+    with pytest.raises(ValueError, match="beyond float32's range"):
+        mcmd.fill(np.zeros((4, 4), np.float32), nodata=1e39)
 
 
 def test_empty_array():
@@ -89,10 +112,6 @@ def test_bad_mask_and_nodata():
     a, nodata = typed_raster("int64")
     with pytest.raises(ValueError, match="the mask has shape"):
         mcmd.fill(a, mask=np.ones((3, 3), bool))
-    with pytest.raises(ValueError, match="not an integer in int64's range"):
-        mcmd.fill(a, nodata=0.5)
-    with pytest.raises(ValueError, match="not an integer in int64's range"):
-        mcmd.fill(a, nodata=2**63)
     assert (mcmd.fill(a, nodata=float(nodata)) != nodata).all()
     with pytest.raises(ValueError, match="is not a number"):
         mcmd.fill(a.astype(np.float32), nodata="none")

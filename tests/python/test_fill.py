@@ -1,9 +1,11 @@
 """mcmd.fill gives the CLI's results to the last bit, for every GDAL type."""
+import os
+
 import numpy as np
 import pytest
 
 import mcmd
-from conftest import TYPES, cli_fill, read, same_bits, terrain, typed_raster, write
+from conftest import TESTDATA, TYPES, cli_fill, read, same_bits, terrain, typed_raster, write
 
 # Python keywords -> the same fill asked of the CLI.
 CONFIGS = {
@@ -150,3 +152,59 @@ def test_fill_from_a_second_dem_of_the_array_s_shape(tmp_path):
     small = write(tmp_path / "small.tif", z[:50, :50].astype(np.float32))
     with pytest.raises(mcmd.Error, match="sizes differ"):
         mcmd.fill(a, fill_from=str(small))
+
+
+def test_masked_array_in_masked_array_out():
+    # Voids only under the mask (no nodata): those max_distance leaves are
+    # masked in the result, the filled ones are not, and nothing else changes.
+    a, nodata = typed_raster("int16")
+    voids = a == nodata
+    a[voids] = 1200  # what lies under the mask: a valid-looking value
+    masked = np.ma.MaskedArray(a, mask=voids)
+    got = mcmd.fill(masked, max_distance=2)
+    ref = mcmd.fill(np.where(voids, nodata, a).astype(np.int16), nodata=nodata, max_distance=2)
+    left = ref == nodata
+    assert isinstance(got, np.ma.MaskedArray) and left.any() and (voids & ~left).any()
+    assert np.array_equal(np.ma.getmaskarray(got), left)
+    assert same_bits(got.data[~left], ref[~left])
+    assert (got.data[left] == 1200).all()  # no nodata given: the cells as they were
+    with_nodata = mcmd.fill(masked, nodata=-999, max_distance=2)
+    assert (with_nodata.data[left] == -999).all() and with_nodata.fill_value == -999
+    assert not np.ma.getmaskarray(mcmd.fill(masked)).any()  # every void filled: nothing masked
+
+
+def test_bands_rows_columns_as_rasterio_reads_them(tmp_path):
+    rasterio = pytest.importorskip("rasterio")
+    src = os.path.join(TESTDATA, "peaks_2band.tif")
+    cli_fill("-rs", "auto", "-seed", "2", src, tmp_path / "cli.tif")
+    with rasterio.open(src) as ds:
+        bands, nodatas = ds.read(), ds.nodatavals
+    got = mcmd.fill(bands, nodata=nodatas, rs="auto", seed=2)
+    assert got.shape == bands.shape
+    for b in (1, 2):
+        assert same_bits(got[b - 1], read(tmp_path / "cli.tif", b))
+    assert same_bits(mcmd.fill(bands, nodata=-32768, rs="auto", seed=2), got)
+
+
+def test_rasterio_fillnodata_keywords(tmp_path):
+    rasterio = pytest.importorskip("rasterio")
+    src = os.path.join(TESTDATA, "peaks_2band.tif")
+    cli_fill("-md", "6", "-b", "1", src, tmp_path / "cli.tif")
+    with rasterio.open(src) as ds:
+        image, mask = ds.read(1), ds.read_masks(1)  # rasterio.fill.fillnodata(image, mask, ...)'s arguments
+    got = mcmd.fill(image, mask, max_search_distance=6, smoothing_iterations=0)
+    assert same_bits(got, read(tmp_path / "cli.tif"))
+    with pytest.raises(TypeError, match="max_search_distance"):
+        mcmd.fill(image, mask, max_distance=3, max_search_distance=6)
+    with pytest.raises(ValueError, match="smoothing_iterations"):
+        mcmd.fill(image, mask, smoothing_iterations=-1)
+
+
+def test_float16_is_filled_as_float32():
+    z, voids = terrain()
+    a = z.astype(np.float16)
+    a[voids] = np.nan
+    got = mcmd.fill(a, rs="auto")
+    assert got.dtype == np.float16 and np.isfinite(got).all()
+    assert same_bits(got[~voids], a[~voids])
+    assert same_bits(got, mcmd.fill(a.astype(np.float32), rs="auto").astype(np.float16))

@@ -46,3 +46,14 @@ def test_docstrings():
         assert obj.__doc__ and len(obj.__doc__) > 40
     for word in ("Parameters", "Raises", "nodata", "mask", "rs"):
         assert word in mcmd.fill.__doc__
+
+
+def test_dir_shows_the_api_and_dask_is_imported_on_first_use():
+    import subprocess
+    import sys
+    code = ("import sys, mcmd; print(sorted(dir(mcmd))); print('dask' in sys.modules, 'xarray' in sys.modules); "
+            "mcmd.dask.fill; print('mcmd.dask' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split("\n")
+    assert out[0] == str(sorted(["Cancelled", "Error", "__version__", "dask", "fill", "fill_file", "xarray"]))
+    assert out[1:3] == ["False False", "True"]
+    assert mcmd.fill.__module__ == "mcmd" and mcmd.fill_file.__module__ == "mcmd"
