@@ -1,6 +1,7 @@
 #include "chunk_fill.hpp"
 
 #include <climits>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <utility>
@@ -121,29 +122,88 @@ ChunkSummary summary_of(const py::dict& d) {
   return s;
 }
 
-// A chunk's solution as Python values (it crosses processes: picklable).
-py::tuple solution_tuple(ChunkSolution&& s) {
-  py::list windows, components;
-  for (WindowSolution& w : s.windows)
-    windows.append(py::make_tuple(w.tx, w.ty, w.x0, w.x1, w.y0, w.y1, to_numpy(std::move(w.cells)),
-                                  to_numpy(std::move(w.z))));
-  for (ComponentSolution& c : s.components)
-    components.append(py::make_tuple(c.index, py::make_tuple(c.x0, c.y0, c.x1, c.y1), to_numpy(std::move(c.values))));
-  return py::make_tuple(windows, components);
+// A chunk's solution as one flat byte array (it crosses processes: one
+// buffer pickles without a copy and parses without Python objects):
+// counts, then per window tx ty x0 x1 y0 y1 (int32), its cells (uint8) and
+// z (double), per component its index (uint64), box (int32) and values.
+class Writer {
+ public:
+  template <class T>
+  void put(const T& v) {
+    const auto* p = reinterpret_cast<const std::uint8_t*>(&v);
+    bytes.insert(bytes.end(), p, p + sizeof(T));
+  }
+  template <class T>
+  void put_all(const std::vector<T>& v) {
+    put<std::uint64_t>(v.size());
+    const auto* p = reinterpret_cast<const std::uint8_t*>(v.data());
+    bytes.insert(bytes.end(), p, p + v.size() * sizeof(T));
+  }
+  std::vector<std::uint8_t> bytes;
+};
+
+class Reader {
+ public:
+  Reader(const std::uint8_t* p, std::size_t n) : p_(p), end_(p + n) {}
+  template <class T>
+  T get() {
+    need(sizeof(T));
+    T v;
+    std::memcpy(&v, p_, sizeof(T));
+    p_ += sizeof(T);
+    return v;
+  }
+  template <class T>
+  std::vector<T> get_all() {
+    const auto n = get<std::uint64_t>();
+    if (n > static_cast<std::uint64_t>(end_ - p_) / sizeof(T)) throw std::invalid_argument("a truncated solution");
+    std::vector<T> v(n);
+    std::memcpy(v.data(), p_, n * sizeof(T));
+    p_ += n * sizeof(T);
+    return v;
+  }
+
+ private:
+  void need(std::size_t n) const {
+    if (static_cast<std::size_t>(end_ - p_) < n) throw std::invalid_argument("a truncated solution");
+  }
+  const std::uint8_t* p_;
+  const std::uint8_t* end_;
+};
+
+py::array_t<std::uint8_t> solution_bytes(const ChunkSolution& s) {
+  Writer w;
+  w.put<std::uint64_t>(s.windows.size());
+  w.put<std::uint64_t>(s.components.size());
+  for (const WindowSolution& win : s.windows) {
+    for (const int v : {win.tx, win.ty, win.x0, win.x1, win.y0, win.y1}) w.put<std::int32_t>(v);
+    w.put_all(win.cells);
+    w.put_all(win.z);
+  }
+  for (const ComponentSolution& c : s.components) {
+    w.put<std::uint64_t>(c.index);
+    for (const int v : {c.x0, c.y0, c.x1, c.y1}) w.put<std::int32_t>(v);
+    w.put_all(c.values);
+  }
+  return to_numpy(std::move(w.bytes));
 }
 
-ChunkSolution solution_of(const py::tuple& t) {
+ChunkSolution solution_of(const py::handle& h) {
+  const auto a = py::array_t<std::uint8_t, py::array::c_style>::ensure(h);
+  if (!a) throw std::invalid_argument("a solution must be a uint8 array");
+  Reader r(a.data(), static_cast<std::size_t>(a.size()));
   ChunkSolution s;
-  for (const py::handle& h : t[0].cast<py::list>()) {
-    const auto w = h.cast<py::tuple>();
-    s.windows.push_back(WindowSolution{w[0].cast<int>(), w[1].cast<int>(), w[2].cast<int>(), w[3].cast<int>(),
-                                       w[4].cast<int>(), w[5].cast<int>(), from_numpy<std::uint8_t>(w[6]),
-                                       from_numpy<double>(w[7])});
+  s.windows.resize(r.get<std::uint64_t>());
+  s.components.resize(r.get<std::uint64_t>());
+  for (WindowSolution& w : s.windows) {
+    for (int* v : {&w.tx, &w.ty, &w.x0, &w.x1, &w.y0, &w.y1}) *v = r.get<std::int32_t>();
+    w.cells = r.get_all<std::uint8_t>();
+    w.z = r.get_all<double>();
   }
-  for (const py::handle& h : t[1].cast<py::list>()) {
-    const auto c = h.cast<py::tuple>();
-    const auto [x0, y0, x1, y1] = c[1].cast<std::tuple<int, int, int, int>>();
-    s.components.push_back(ComponentSolution{c[0].cast<std::size_t>(), x0, y0, x1, y1, from_numpy<double>(c[2])});
+  for (ComponentSolution& c : s.components) {
+    c.index = r.get<std::uint64_t>();
+    for (int* v : {&c.x0, &c.y0, &c.x1, &c.y1}) *v = r.get<std::int32_t>();
+    c.values = r.get_all<double>();
   }
   return s;
 }
@@ -230,14 +290,20 @@ void register_chunk_fill(py::module_& m) {
           const py::gil_scoped_release nogil;
           s = solve_chunk(b.access(), *plan.plan, rect_of(own));
         }
-        return solution_tuple(std::move(s));
+        return solution_bytes(s);
       },
       py::arg("plan"), py::arg("block"), py::arg("valid"), py::arg("gdal_type"), py::arg("nodata"),
       py::arg("origin"), py::arg("own"), "Step 3: the windows and small voids a chunk owns, solved.");
   m.def(
       "solution_part",
-      [](const py::tuple& solution, std::tuple<int, int, int, int> other) {
-        return solution_tuple(solution_part(solution_of(solution), rect_of(other)));
+      [](const py::handle& solution, std::tuple<int, int, int, int> other) {
+        ChunkSolution s = solution_of(solution);
+        ChunkSolution part;
+        {
+          const py::gil_scoped_release nogil;
+          part = solution_part(s, rect_of(other));
+        }
+        return solution_bytes(part);
       },
       py::arg("solution"), py::arg("other"), "The part of a chunk's solution that chunk `other`'s blend needs.");
   m.def(
@@ -245,7 +311,7 @@ void register_chunk_fill(py::module_& m) {
       [](const Plan& plan, py::array out, std::optional<py::array> valid, const std::string& gdal_type,
          py::object nodata, std::tuple<int, int, int, int> own, const py::list& around) {
         std::vector<ChunkSolution> solutions;
-        for (const py::handle& h : around) solutions.push_back(solution_of(h.cast<py::tuple>()));
+        for (const py::handle& h : around) solutions.push_back(solution_of(h));
         std::vector<const ChunkSolution*> pointers;
         for (const ChunkSolution& s : solutions) pointers.push_back(&s);
         const CellRect r = rect_of(own);

@@ -138,8 +138,8 @@ def test_dataarray_keeps_coordinates_and_nodata(tmp_path):
 
 def test_bad_input_raises():
     a = da.from_array(raster(), chunks=128)
-    with pytest.raises(ValueError, match="2-D"):
-        mcmd.dask.fill(a[None], nodata=-9999)
+    with pytest.raises(ValueError, match="2-D .* or 3-D"):
+        mcmd.dask.fill(a[None, None], nodata=-9999)
     with pytest.raises(ValueError, match="complex"):
         mcmd.dask.fill(a.astype(np.complex64), nodata=-9999)
     with pytest.raises(ValueError, match="nothing marks the voids"):
@@ -148,6 +148,10 @@ def test_bad_input_raises():
         mcmd.dask.fill(a, nodata=-9999, rs="rough")
     with pytest.raises(ValueError, match="FILL_FROM"):
         mcmd.dask.fill(a, nodata=-9999, fill_from="other.tif")
+    with pytest.raises(ValueError, match="MORPH=auto"):  # not silently ignored
+        mcmd.dask.fill(a, nodata=-9999, morph="auto")
+    with pytest.raises(ValueError, match="cannot hold it"):
+        mcmd.dask.fill(a.astype(np.int16), nodata=1200.5)
     with pytest.raises(ValueError, match="in cells"):
         mcmd.dask.fill(a, nodata=-9999, max_void="3km2")
     with pytest.raises(ValueError, match="mask"):
@@ -165,6 +169,9 @@ def run_module(*args):
 def test_module_writes_the_cli_s_geotiff_and_zarr(tmp_path):
     a = raster()
     src, want = cli_result(tmp_path, a, -9999)
+    p = run_module(src, tmp_path / "threads.tif", "--chunk", "128", "-q", *TILE)  # the threaded scheduler
+    assert p.returncode == 0, p.stderr
+    assert same_bits(read(tmp_path / "threads.tif"), want)
     p = run_module(src, tmp_path / "dask.tif", "--workers", "2", "--chunk", "128", *TILE)
     assert p.returncode == 0, p.stderr
     assert "100% Completed" in p.stdout  # Dask's progress bar
@@ -188,6 +195,11 @@ def test_module_errors_are_one_line_and_leave_nothing(tmp_path):
     assert p.returncode == 1 and "band 3 does not exist" in p.stderr
     p = run_module(src, tmp_path / "out.tif", "-rs", "rough", "--workers", "1")
     assert p.returncode == 1 and p.stderr.startswith("mcmd.dask: ") and p.stderr.count("\n") == 1, p.stderr
+    # Its messages name its own flags, not Python keywords.
+    p = run_module(write(tmp_path / "no_nodata.tif", raster("int16", 0)), tmp_path / "out.tif")
+    assert p.returncode == 1 and "gdal_edit.py -a_nodata" in p.stderr and "nodata=" not in p.stderr, p.stderr
+    p = run_module(src, tmp_path / "out.tif", "-o", "MORPH=auto")
+    assert p.returncode == 1 and "-morph auto needs the whole raster" in p.stderr, p.stderr
     assert not os.path.exists(tmp_path / "out.tif")
     assert not [f for f in os.listdir(tmp_path) if "mcmd-tmp" in f]
 
@@ -205,3 +217,68 @@ def test_module_void_cap_as_an_area_is_the_cli_s(tmp_path):
     p = run_module(src, tmp_path / "capped.tif", "--workers", "1", "-q", "-maxvoid", "1.5km2", *TILE)
     assert p.returncode == 0, p.stderr
     assert same_bits(read(tmp_path / "capped.tif"), want) and (want == -9999).any()
+
+
+def test_module_keeps_band_descriptions_and_metadata(tmp_path):
+    from osgeo import gdal
+    from conftest import TESTDATA
+    src = os.path.join(TESTDATA, "peaks_2band.tif")
+    cli_fill(src, tmp_path / "cli.tif")
+    p = run_module(src, tmp_path / "dask.tif", "-q")
+    assert p.returncode == 0, p.stderr
+    cli, out = gdal.Open(str(tmp_path / "cli.tif")), gdal.Open(str(tmp_path / "dask.tif"))
+    for b in (1, 2):
+        cb, ob = cli.GetRasterBand(b), out.GetRasterBand(b)
+        assert ob.GetDescription() == cb.GetDescription() != ""
+        assert ob.GetColorInterpretation() == cb.GetColorInterpretation()
+        assert same_bits(ob.ReadAsArray(), cb.ReadAsArray())
+
+
+def test_docs_example_runs_on_a_distributed_client(tmp_path, cluster):
+    """docs/dask.md's example, as written, on a LocalCluster (its scheduler
+    address and a raster of ours put in place of the example's)."""
+    import re
+    from conftest import REPO
+    with open(os.path.join(REPO, "docs", "dask.md"), encoding="utf-8") as f:
+        example = re.search(r"```python\n(.*?)```", f.read(), re.S).group(1)
+    src, want = cli_result(tmp_path, raster(), -9999)
+    code = (example.replace("tcp://scheduler:8786", cluster.scheduler_address).replace("mosaic.vrt", src)
+            .replace('"filled.tif"', repr(str(tmp_path / "filled.tif"))).replace("rs=\"auto\", seed=1", "tile_size=65, tiling=\"ALWAYS\""))
+    assert cluster.scheduler_address in code and src in code
+    scope = {}
+    exec(compile(code, "docs/dask.md", "exec"), scope)
+    scope["client"].close()
+    assert same_bits(read(tmp_path / "filled.tif"), want)
+
+
+def test_a_cluster_of_dask_scheduler_and_dask_worker_processes(tmp_path):
+    """A real multi-process cluster: `dask scheduler` and two `dask worker`
+    processes on localhost, used by python3 -m mcmd.dask and by a Client."""
+    a = raster()
+    src, want = cli_result(tmp_path, a, -9999)
+    address_file = tmp_path / "scheduler.json"
+    common = ["--no-dashboard"]
+    procs = [subprocess.Popen(["dask", "scheduler", "--host", "127.0.0.1", "--port", "0", "--scheduler-file",
+                               str(address_file), *common], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
+    try:
+        deadline = time.time() + WAIT
+        while not address_file.exists() and time.time() < deadline:
+            time.sleep(0.1)
+        for _ in range(2):
+            procs.append(subprocess.Popen(["dask", "worker", "--scheduler-file", str(address_file), "--nthreads", "1",
+                                           "--host", "127.0.0.1", *common],
+                                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
+        with Client(scheduler_file=str(address_file), timeout=WAIT) as client:
+            client.wait_for_workers(2, timeout=WAIT)
+            assert len({pid for pid in client.run(os.getpid).values()} | {os.getpid()}) == 3
+            lazy = mcmd.dask.fill(da.from_array(a, chunks=128), nodata=-9999, tile_size=65, tiling="ALWAYS")
+            assert same_bits(client.compute(lazy).result(timeout=WAIT), want)
+            p = run_module(src, tmp_path / "dask.tif", "--scheduler", client.scheduler.address, "--chunk", "128", "-q",
+                           *TILE)
+            assert p.returncode == 0, p.stderr
+            assert same_bits(read(tmp_path / "dask.tif"), want)
+    finally:
+        for p in reversed(procs):
+            p.terminate()
+        for p in procs:
+            p.wait(timeout=60)

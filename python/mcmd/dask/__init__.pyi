@@ -6,7 +6,7 @@ __all__: list[str]
 def fill(
     data: Any,
     mask: Any = ...,
-    nodata: int | float | None = ...,
+    nodata: Any = ...,
     *,
     method: str = ...,
     rs: float | str = ...,

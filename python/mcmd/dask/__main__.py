@@ -1,21 +1,20 @@
-"""python3 -m mcmd.dask SRC DST: fill a raster file on a Dask cluster.
+"""python3 -m mcmd.dask SRC DST: fill a raster file with Dask.
 
-    python3 -m mcmd.dask SRC DST [--workers N] [--threads-per-worker T]
-        [--scheduler ADDRESS] [--chunk CELLS] [-b BAND]... [-md DIST]
+    python3 -m mcmd.dask SRC DST [--threads N | --workers N | --scheduler ADDRESS]
+        [--threads-per-worker T] [--chunk CELLS] [-b BAND]... [-md DIST]
         [-rs R|auto] [-seed S] [-method M] [-tile T] [-inner] [-maxvoid N]
-        [-o NAME=VALUE]...
-        [-co NAME=VALUE]... [-q]
+        [-o NAME=VALUE]... [-co NAME=VALUE]... [-q]
 
-Reads SRC with rioxarray (chunked: each worker reads its blocks), fills every
-band (or the -b bands; the others are copied) with mcmd.dask.fill on a
-dask.distributed cluster (a LocalCluster of N worker processes by default,
-the scheduler at ADDRESS when given), and writes DST as a tiled GeoTIFF, or
-as Zarr when DST ends in .zarr. The result is the CLI's, bit for bit
-(mcmd_fillnodata SRC DST with the same options). The output is written under
-a temporary name beside DST and renamed at the end; Dask's progress bar
-shows the chunks computed: a failed or interrupted
-run leaves nothing behind. Errors: one line on stderr, exit status 1 (2 for
-bad arguments).
+Fills every band (or the -b bands; the others are copied) of SRC and writes
+DST as a tiled GeoTIFF, or as Zarr when DST ends in .zarr: the result is
+mcmd_fillnodata's, bit for bit, with the same options. By default the graph
+runs on Dask's threaded scheduler in this process; --workers N starts a
+LocalCluster of N worker processes, --scheduler ADDRESS uses a running
+dask.distributed scheduler (every worker must read SRC at the same path).
+Each task reads its own window of SRC; the filled chunks are written as they
+arrive, under a temporary name beside DST renamed at the end: a failed or
+interrupted run leaves nothing behind. Errors: one line on stderr, exit
+status 1 (2 for bad arguments, 130 when interrupted).
 """
 from __future__ import annotations
 
@@ -24,22 +23,27 @@ import os
 import shutil
 import sys
 import threading
-import warnings
-
-from .. import Error
 
 _FLAG_OPTIONS = {"-md": "MAX_DISTANCE", "-rs": "RS", "-seed": "SEED", "-method": "METHOD", "-tile": "TILE_SIZE"}
+_FLAGS_OF = {"FILL_FROM": "-fill-from", "FILL_FROM_RESAMPLING": "-fill-from", "RIVERS": "-rivers",
+             "RIDGES": "-ridges", "MORPH": "-morph auto"}
+
+
+class Failure(Exception):
+    """A failure reported as the command's one line."""
 
 
 def parse(argv):
-    ap = argparse.ArgumentParser(prog="python3 -m mcmd.dask", description=__doc__.split("\n\n")[0],
+    ap = argparse.ArgumentParser(prog="python3 -m mcmd.dask", description=__doc__.split("\n\n")[2],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("src")
     ap.add_argument("dst")
-    ap.add_argument("--workers", type=int, default=2, help="worker processes of the LocalCluster (default 2)")
-    ap.add_argument("--threads-per-worker", type=int, default=1)
-    ap.add_argument("--scheduler", help="address of an existing dask.distributed scheduler")
-    ap.add_argument("--chunk", type=int, default=1024, help="chunk side in cells (default 1024)")
+    where = ap.add_mutually_exclusive_group()
+    where.add_argument("--threads", type=int, help="threads of the threaded scheduler (default: every CPU)")
+    where.add_argument("--workers", type=int, help="start a LocalCluster of this many worker processes")
+    where.add_argument("--scheduler", help="address of a running dask.distributed scheduler")
+    ap.add_argument("--threads-per-worker", type=int, default=1, help="threads of each LocalCluster worker (1)")
+    ap.add_argument("--chunk", type=int, default=2048, help="chunk side in cells (default 2048)")
     ap.add_argument("-b", dest="bands", type=int, action="append", help="band to fill (repeatable)")
     for flag, name in _FLAG_OPTIONS.items():
         ap.add_argument(flag, dest=name, help=f"as mcmd_fillnodata {flag}")
@@ -49,33 +53,31 @@ def parse(argv):
     ap.add_argument("-co", dest="creation", action="append", default=[], help="GeoTIFF creation option")
     ap.add_argument("-q", dest="quiet", action="store_true", help="no progress bar")
     a = ap.parse_args(argv)
-    if a.workers < 1 or a.threads_per_worker < 1 or a.chunk < 1:
-        ap.error("--workers, --threads-per-worker and --chunk must be >= 1")
+    for name in ("threads", "workers", "threads_per_worker", "chunk"):
+        if getattr(a, name) is not None and getattr(a, name) < 1:
+            ap.error(f"--{name.replace('_', '-')} must be >= 1")
     a.fill_options = {}
     for flag, name in _FLAG_OPTIONS.items():
         if getattr(a, name) is not None:
-            a.fill_options[name.lower()] = getattr(a, name)
+            a.fill_options[name] = getattr(a, name)
     if a.inner:
-        a.fill_options["inner_only"] = True
+        a.fill_options["INNER_ONLY"] = "YES"
     if a.maxvoid is not None:
-        a.fill_options["max_void"] = a.maxvoid
+        a.fill_options["MAX_VOID"] = a.maxvoid
     for o in a.options:
         if "=" not in o:
             ap.error(f"-o expects NAME=VALUE, got {o!r}")
         name, value = o.split("=", 1)
-        a.fill_options[name.strip().lower()] = value
+        a.fill_options[name.strip().upper()] = value
     return a
 
 
 def main(argv=None) -> int:
     a = parse(argv)
-    # rasterio's warning for plain grids, here and in the LocalCluster's workers
-    warnings.filterwarnings("ignore", message="Dataset has no geotransform")
-    os.environ["PYTHONWARNINGS"] = ",".join(filter(None, [os.environ.get("PYTHONWARNINGS"),
-                                                          "ignore:Dataset has no geotransform"]))
+    from .. import Error
     try:
         run(a)
-    except (Error, ValueError, OSError, RuntimeError) as e:
+    except (Failure, Error, ValueError, OSError, RuntimeError) as e:
         print(f"mcmd.dask: {e}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
@@ -90,133 +92,231 @@ def run(a) -> None:
     try:
         src = gdal.Open(a.src)
     except RuntimeError as e:
-        raise Error(f"cannot open '{a.src}': {e}") from None
+        raise Failure(f"cannot open '{a.src}': {e}") from None
     bands = a.bands or [b for b in range(1, src.RasterCount + 1)
                         if src.GetRasterBand(b).GetColorInterpretation() != gdal.GCI_AlphaBand]
     for b in bands:
         if not 1 <= b <= src.RasterCount:
-            raise ValueError(f"band {b} does not exist: '{a.src}' has {src.RasterCount} band(s)")
+            raise Failure(f"band {b} does not exist: '{a.src}' has {src.RasterCount} band(s)")
+    zarr = a.dst.rstrip("/").endswith(".zarr")
     dst_dir = os.path.dirname(os.path.abspath(a.dst))
     if not os.path.isdir(dst_dir):
-        raise Error(f"cannot write '{a.dst}': folder '{dst_dir}' does not exist")
-    if os.path.isdir(a.dst) and not a.dst.rstrip("/").endswith(".zarr"):
-        raise Error(f"cannot write '{a.dst}': it is a folder")
-    check_options(a, src)  # before any cluster starts
-    from distributed import Client, LocalCluster
+        raise Failure(f"cannot write '{a.dst}': folder '{dst_dir}' does not exist")
+    if os.path.isdir(a.dst) and not zarr:
+        raise Failure(f"cannot write '{a.dst}': it is a folder")
+    options = check_options(a, src)  # before any cluster starts
+    graphs = {b: band(a, src, b, options) for b in bands}
     tmp = os.path.join(dst_dir, f".{os.path.basename(a.dst.rstrip('/'))}.mcmd-tmp-{os.getpid()}")
-    cluster = None
     try:
-        if a.scheduler:
-            client = Client(a.scheduler)
+        if a.threads is not None or (a.workers is None and a.scheduler is None):
+            on_threads(a, src, graphs, tmp, zarr)
         else:
-            cluster = LocalCluster(n_workers=a.workers, threads_per_worker=a.threads_per_worker, processes=True,
-                                   dashboard_address=None)
-            client = Client(cluster)
-        with client:
-            filled = fill_bands(a, src, bands)
-            if a.dst.rstrip("/").endswith(".zarr"):
-                write_zarr(client, filled, tmp, a.quiet)
-            else:
-                write_geotiff(client, filled, src, bands, tmp, a.creation, a.quiet)
+            on_cluster(a, src, graphs, tmp, zarr)
         replace(tmp, a.dst)
     finally:
         remove(tmp)
+
+
+def check_options(a, src) -> list:
+    """The fill's NAME=VALUE options, checked by the library's parser (the
+    CLI's messages); a void cap given as an area becomes cells of SRC, as
+    the CLI converts it."""
+    from .. import _options
+    from .._mcmd import chunk_grid, max_void_cells
+    for name, value in a.fill_options.items():
+        if name in _FLAGS_OF and (name != "MORPH" or value.strip().upper() == "AUTO"):
+            raise Failure(f"{_FLAGS_OF[name]} needs the whole raster at once: use mcmd_fillnodata for it")
+    options = _options.fill_options(a.fill_options, caller="mcmd.dask")
+    cells = max_void_cells(options, a.src)
+    if cells:
+        a.fill_options["MAX_VOID"] = f"{cells}cells"
+        options = _options.fill_options(a.fill_options, caller="mcmd.dask")
+    chunk_grid(src.RasterXSize, src.RasterYSize, options)
+    return options
+
+
+def band(a, src, b: int, options: list) -> tuple:
+    """(graph, output chunks, gathered summaries' key, dtype) of band b's fill."""
+    import dask.base
+    from osgeo import gdal
+    from . import _file
+    stat = os.stat(a.src)
+    token = dask.base.tokenize(os.path.abspath(a.src), stat.st_mtime_ns, stat.st_size, b, options)
+    spec, dtype = _file.source_spec(a.src, b, options, token)
+    sb = src.GetRasterBand(b)
+    marked = spec.nodata is not None or dtype.kind == "f" or not sb.GetMaskFlags() & gdal.GMF_ALL_VALID
+    if not marked:
+        raise Failure(f"band {b} has no nodata value, mask or NaN cell: nothing marks the voids "
+                      "(set a nodata value, e.g. gdal_edit.py -a_nodata)")
+    dsk, out, gather_key = _file.band_graph(a.src, b, spec, a.chunk, hold=holds(spec, dtype))
+    return dsk, out, gather_key, dtype
+
+
+def holds(spec, dtype) -> bool:
+    """Whether each chunk is read once and held from its summary to its
+    blend (rasters up to an eighth of this machine's memory), rather than
+    read again by each step."""
+    pages = os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+    return spec.width * spec.height * dtype.itemsize * 2 <= pages // 8
+
+
+def on_threads(a, src, graphs, tmp, zarr) -> None:
+    """Dask's threaded scheduler in this process; each filled chunk is
+    written by a task of its own as soon as it is done."""
+    import dask
+    import dask.threaded
+    lock = threading.Lock()
+    dsk, stores = {}, []
+    writer = zarr_writer(src, graphs, tmp) if zarr else geotiff_writer(a, src, graphs, tmp)
+
+    def store(b, x0, y0, block):
+        with lock:
+            writer.write(b, x0, y0, block)
+
+    for b, (graph, out, _, _) in graphs.items():
+        dsk.update(graph)
+        for k, (key, x0, y0) in enumerate(out):
+            stores.append((f"mcmd-store-{b}", k))
+            dsk[stores[-1]] = (store, b, x0, y0, key)
+    with dask.config.set(num_workers=a.threads or os.cpu_count()):
+        if a.quiet:
+            dask.threaded.get(dsk, stores)
+        else:
+            from dask.diagnostics import ProgressBar
+            with ProgressBar():
+                dask.threaded.get(dsk, stores)
+    writer.close()
+
+
+def on_cluster(a, src, graphs, tmp, zarr) -> None:
+    """A dask.distributed cluster: chunks written as they arrive (the client
+    holds one at a time)."""
+    from distributed import Client, LocalCluster, as_completed, progress
+    from . import _file
+    cluster = None
+    if a.scheduler:
+        client = Client(a.scheduler)
+    else:
+        cluster = LocalCluster(n_workers=a.workers, threads_per_worker=a.threads_per_worker, processes=True,
+                               dashboard_address=None)
+        client = Client(cluster)
+    try:
+        writer = zarr_writer(src, graphs, tmp) if zarr else geotiff_writer(a, src, graphs, tmp)
+        futures, where = [], {}
+        for b, (graph, out, gather_key, _) in graphs.items():
+            if gather_key is None:
+                fs = client.get(graph, [key for key, _, _ in out], sync=False)
+            else:
+                fs = _file.on_client(client, graph, out, gather_key)
+            for f, (_, x0, y0) in zip(fs, out):
+                where[f.key] = (b, x0, y0)
+            futures += fs
+        failed = []
+
+        def write_all():  # GDAL's dataset stays on this one thread
+            try:
+                for future in as_completed(futures):
+                    writer.write(*where[future.key], future.result())
+                    future.release()
+            except BaseException as e:  # noqa: BLE001  (raised again on the calling thread)
+                failed.append(e)
+
+        thread = threading.Thread(target=write_all, name="mcmd.dask writer")
+        thread.start()
+        if not a.quiet:
+            progress(futures)  # Dask's text progress bar, until every chunk is computed
+            print()
+        thread.join()
+        if failed:
+            raise failed[0]
+        writer.close()
+    finally:
+        client.close()
         if cluster is not None:
             cluster.close()
 
 
-def check_options(a, src) -> None:
-    """A bad option fails here, with the CLI's message. A void cap given as
-    an area becomes cells of SRC, as the CLI converts it."""
-    from .. import _options
-    from .._mcmd import chunk_grid, max_void_cells
-    options = _options.fill_options(dict(a.fill_options), caller="mcmd.dask")
-    cells = max_void_cells(options, a.src)
-    if cells:
-        a.fill_options = {k: v for k, v in a.fill_options.items() if k.upper() not in ("MAX_VOID", "MAXVOID")}
-        a.fill_options["max_void"] = f"{cells}cells"
-        options = _options.fill_options(dict(a.fill_options), caller="mcmd.dask")
-    chunk_grid(src.RasterXSize, src.RasterYSize, options)
+class geotiff_writer:
+    """The output GeoTIFF: SRC's size, type, georeferencing, metadata, and
+    per band its nodata value, description, colour, unit, offset, scale and
+    metadata; the bands not filled are copied."""
+
+    def __init__(self, a, src, graphs, tmp):
+        from osgeo import gdal
+        W, H, n = src.RasterXSize, src.RasterYSize, src.RasterCount
+        options = ["TILED=YES", "BIGTIFF=IF_SAFER"] + list(a.creation)
+        out = gdal.GetDriverByName("GTiff").Create(tmp, W, H, n, src.GetRasterBand(1).DataType, options)
+        if src.GetGeoTransform(can_return_null=True) is not None:
+            out.SetGeoTransform(src.GetGeoTransform())
+        if src.GetProjection():
+            out.SetProjection(src.GetProjection())
+        out.SetMetadata(src.GetMetadata())
+        for b in range(1, n + 1):
+            sb, ob = src.GetRasterBand(b), out.GetRasterBand(b)
+            copy_band_fields(sb, ob)
+            if b not in graphs:  # copied as it is, in row strips
+                rows = max(1, (1 << 22) // max(W, 1))
+                for y in range(0, H, rows):
+                    ob.WriteArray(sb.ReadAsArray(0, y, W, min(rows, H - y)), 0, y)
+        self.out = out
+
+    def write(self, b, x0, y0, block):
+        self.out.GetRasterBand(b).WriteArray(block, x0, y0)
+
+    def close(self):
+        self.out.FlushCache()
+        self.out = None
 
 
-def fill_bands(a, src, bands):
-    """{band: lazy filled DataArray}, read by the workers with rioxarray."""
-    import rioxarray
-    from . import fill
-    data = rioxarray.open_rasterio(a.src, chunks={"band": 1, "y": a.chunk, "x": a.chunk}, lock=False,
-                                   mask_and_scale=False)
-    filled = {}
-    for b in bands:
-        band = data.sel(band=b)
-        nodata = src.GetRasterBand(b).GetNoDataValue()
-        filled[b] = fill(band, nodata=nodata, chunks=a.chunk, **a.fill_options)
-    return filled
+def copy_band_fields(sb, ob) -> None:
+    if sb.GetNoDataValue() is not None:
+        ob.SetNoDataValue(sb.GetNoDataValue())
+    ob.SetColorInterpretation(sb.GetColorInterpretation())
+    ob.SetDescription(sb.GetDescription())
+    ob.SetMetadata(sb.GetMetadata())
+    if sb.GetUnitType():
+        ob.SetUnitType(sb.GetUnitType())
+    if sb.GetOffset() not in (None, 0.0):
+        ob.SetOffset(sb.GetOffset())
+    if sb.GetScale() not in (None, 1.0):
+        ob.SetScale(sb.GetScale())
 
 
-def write_geotiff(client, filled, src, bands, tmp, creation, quiet) -> None:
-    """Chunks are written as they arrive (the client holds one at a time)."""
-    from distributed import as_completed, progress
-    from osgeo import gdal
-    import numpy as np
-    W, H, n = src.RasterXSize, src.RasterYSize, src.RasterCount
-    options = ["TILED=YES", "BIGTIFF=IF_SAFER"] + list(creation)
-    out = gdal.GetDriverByName("GTiff").Create(tmp, W, H, n, src.GetRasterBand(1).DataType, options)
-    if src.GetGeoTransform(can_return_null=True) is not None:
-        out.SetGeoTransform(src.GetGeoTransform())
-    if src.GetProjection():
-        out.SetProjection(src.GetProjection())
-    out.SetMetadata(src.GetMetadata())
-    for b in range(1, n + 1):
-        sb, ob = src.GetRasterBand(b), out.GetRasterBand(b)
-        if sb.GetNoDataValue() is not None:
-            ob.SetNoDataValue(sb.GetNoDataValue())
-        ob.SetColorInterpretation(sb.GetColorInterpretation())
-        if b not in filled:  # copied as it is, in row strips
-            rows = max(1, (1 << 22) // max(W, 1))
-            for y in range(0, H, rows):
-                ob.WriteArray(sb.ReadAsArray(0, y, W, min(rows, H - y)), 0, y)
-    pieces = []
-    for b, arr in filled.items():
-        data = arr.data
-        offsets = [np.cumsum((0,) + c[:-1]) for c in data.chunks]
-        for (j, i), block in np.ndenumerate(np.empty(data.numblocks, dtype=object)):
-            pieces.append((b, int(offsets[1][i]), int(offsets[0][j]), data.blocks[j, i]))
-    futures = client.compute([p[3] for p in pieces])
-    where = {f.key: p[:3] for f, p in zip(futures, pieces)}
-    failed = []
+class zarr_writer:
+    """The output Zarr store as xarray and rioxarray read it: one array
+    band_B (y, x) per filled band, its coordinates, CRS and nodata."""
 
-    def write_all():  # GDAL's dataset stays on this one thread
-        try:
-            for future in as_completed(futures):
-                b, x0, y0 = where[future.key]
-                out.GetRasterBand(b).WriteArray(future.result(), x0, y0)
-                future.release()
-        except BaseException as e:  # noqa: BLE001  (re-raised on the calling thread)
-            failed.append(e)
+    def __init__(self, src, graphs, tmp):
+        import numpy as np
+        import zarr
+        W, H = src.RasterXSize, src.RasterYSize
+        root = zarr.open_group(tmp, mode="w")
+        gt = src.GetGeoTransform(can_return_null=True) or (0.0, 1.0, 0.0, 0.0, 0.0, 1.0)
+        for name, n, origin, size in (("x", W, gt[0], gt[1]), ("y", H, gt[3], gt[5])):
+            coord = root.create_dataset(name, data=origin + (np.arange(n) + 0.5) * size, overwrite=True)
+            coord.attrs["_ARRAY_DIMENSIONS"] = [name]
+        crs = root.create_dataset("spatial_ref", shape=(), dtype="i8", fill_value=0)
+        crs.attrs.update({"_ARRAY_DIMENSIONS": [], "crs_wkt": src.GetProjection(), "spatial_ref": src.GetProjection(),
+                          "GeoTransform": " ".join(repr(v) for v in gt)})
+        self.arrays = {}
+        for b, (graph, out, _, dtype) in graphs.items():
+            sb = src.GetRasterBand(b)
+            chunks = (min((y0 for _, _, y0 in out if y0 > 0), default=H),
+                      min((x0 for _, x0, _ in out if x0 > 0), default=W))
+            arr = root.create_dataset(f"band_{b}", shape=(H, W), chunks=chunks, dtype=dtype, fill_value=None)
+            attrs = {"_ARRAY_DIMENSIONS": ["y", "x"], "grid_mapping": "spatial_ref"}
+            if sb.GetNoDataValue() is not None:
+                attrs["nodata"] = sb.GetNoDataValue()
+            arr.attrs.update(attrs)
+            self.arrays[b] = arr
+        self.root = root
 
-    writer = threading.Thread(target=write_all, name="mcmd.dask writer")
-    writer.start()
-    if not quiet:
-        progress(futures)  # Dask's text progress bar, until every chunk is computed
-        print()
-    writer.join()
-    if failed:
-        raise failed[0]
-    out.FlushCache()
-    out = None
+    def write(self, b, x0, y0, block):
+        self.arrays[b][y0:y0 + block.shape[0], x0:x0 + block.shape[1]] = block
 
-
-def write_zarr(client, filled, tmp, quiet) -> None:
-    import xarray
-    from distributed import progress, wait
-    ds = xarray.Dataset({f"band_{b}": arr.drop_vars("band", errors="ignore") for b, arr in filled.items()})
-    job = ds.to_zarr(tmp, compute=False)
-    future = client.compute(job)
-    if not quiet:
-        progress(future)
-        print()
-    wait(future)
-    future.result()
+    def close(self):
+        import zarr
+        zarr.consolidate_metadata(self.root.store)
 
 
 def replace(tmp: str, dst: str) -> None:

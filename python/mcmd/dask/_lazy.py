@@ -1,24 +1,5 @@
-"""Region-scale fills on Dask: ``mcmd.dask.fill`` returns a lazy filled array.
-
-The fill is the CLI's tiled fill split into chunks whose sides are multiples
-of the tile step (tile size - 1). The graph has four steps (docs/dask.md):
-
-1. per chunk, a summary: its void cells, its known range and the coarse
-   guide's sums over the chunk (a block read with a margin around it);
-2. one task gathers the summaries; each worker builds the plan from them once
-   (the guide's solve, the small voids, the list of windows);
-3. per chunk, the windows of the tiles it owns and its small voids, solved;
-4. per chunk, its cells blended from its own solution and the parts of its
-   8 neighbours' that reach into it (cut where they lie: only those travel).
-
-For the same options (tile size included), the result is bit-identical to
-``mcmd_fillnodata``'s on the same raster, whatever the chunking, the number
-of workers or the scheduler. Rasters the CLI fills whole (the default method
-on at most 2^21 cells, unless ``tiling="ALWAYS"``) are filled whole, in one
-task, by the same code.
-
-``python3 -m mcmd.dask SRC DST`` fills a file on a cluster (``--help``).
-"""
+"""mcmd.dask.fill on dask arrays and DataArrays: the graph of its four steps
+(docs/dask.md) built from dask.array's chunks."""
 from __future__ import annotations
 
 from typing import Any, Optional
@@ -28,119 +9,85 @@ import dask.array as da
 import numpy as np
 
 from .. import _arrays, _options
+from .._fill import is_dataarray, rasterio_keywords
 from .._mcmd import chunk_grid, fills_whole
 from . import _steps
-
-__all__ = ["fill"]
+from ._file import edges
 
 # Options the chunked fill cannot honour: they judge or read the raster as a whole.
 _WHOLE_RASTER_OPTIONS = {"FILL_FROM", "FILL_FROM_RESAMPLING", "RIVERS", "RIDGES"}
 
 
-def fill(data: Any, mask: Any = None, nodata: int | float | None = None, *, method: str = "mcmd",
-         rs: float | str = 0.0, seed: int = 0, max_distance: float = 0, chunks: Optional[int] = None,
-         **options: Any) -> Any:
-    """Fill the voids of a 2-D dask array or xarray.DataArray, lazily.
-
-    Parameters
-    ----------
-    data : dask.array.Array, xarray.DataArray or array_like, 2-D (rows, columns)
-        Any dtype :func:`mcmd.fill` takes. A DataArray keeps its coordinates,
-        attributes and rioxarray fields; its nodata value is
-        ``data.rio.nodata`` (or the ``_FillValue`` attribute) unless given.
-    mask : same shape, optional
-        Validity mask, true / non-zero = valid (as :func:`mcmd.fill`).
-    nodata : number, optional
-        Cells equal to it are voids.
-    method, rs, seed, max_distance, **options
-        As for :func:`mcmd.fill` (``tile_size=``, ``tiling=``, ``H=``,
-        ``inner_only=True``, ``max_void=5000`` in cells...). ``fill_from``,
-        ``rivers`` and ``ridges`` read other files whole: use
-        :func:`mcmd.fill_file`.
-    chunks : int, optional
-        Side of the fill's chunks, rounded up to a multiple of the tile step
-        (default: the input's first chunk, rounded likewise). The data are
-        rechunked to it; the result does not depend on it.
-
-    Returns
-    -------
-    The same kind as ``data`` (a dask array for array input), lazy, with the
-    dtype of ``data``; valid cells bit-exact.
-
-    Raises
-    ------
-    ValueError
-        Not 2-D, an unsupported dtype, a mask of another shape, nothing
-        marking the voids of an integer raster, a bad or whole-raster option.
-    mcmd.Error
-        At compute time: no valid cell to fill from.
-    """
+def fill(data: Any, mask: Any = None, nodata: Any = None, *, method: str = "mcmd", rs: float | str = 0.0,
+         seed: int = 0, max_distance: float = 0, chunks: Optional[int] = None, **options: Any) -> Any:
+    """mcmd.dask.fill (its docstring says what it does)."""
     xarr = _as_dataarray(data)
     arr = xarr.data if xarr is not None else data
     if not isinstance(arr, da.Array):
         arr = da.from_array(np.asarray(arr), chunks="auto")
-    if arr.ndim != 2:
-        raise ValueError(f"expected a 2-D array (rows, columns), got {arr.ndim}-D of shape {arr.shape}")
+    if arr.ndim not in (2, 3):
+        raise ValueError(f"expected a 2-D (rows, columns) or 3-D (bands, rows, columns) array, got {arr.ndim}-D "
+                         f"of shape {arr.shape}")
     if 0 in arr.shape:
         raise ValueError(f"the array is empty (shape {arr.shape})")
-    gdal_type = _arrays.gdal_type(arr.dtype)
+    _arrays.check_dtype(arr.dtype)
     if nodata is None and xarr is not None:
-        nodata = _nodata_of(xarr)
-    nd = _arrays.nodata_value(nodata, arr.dtype)
-    marr = _mask_array(mask, arr)
-    if marr is None and nd is None and arr.dtype.kind != "f":
-        raise ValueError("the array has no nodata value or mask and cannot hold NaN: nothing marks the voids "
-                         "(pass nodata= or mask=)")
+        from ..xarray import nodata_of
+        nodata = nodata_of(xarr)
+    max_distance = rasterio_keywords(options, max_distance, "mcmd.dask.fill")
     named = {"METHOD": ("method", method), "RS": ("rs", rs), "SEED": ("seed", seed),
              "MAX_DISTANCE": ("max_distance", max_distance)}
     opts = _options.fill_options(options, named, caller="mcmd.dask.fill")
-    for o in opts:
-        if o.split("=", 1)[0].upper() in _WHOLE_RASTER_OPTIONS:
-            raise ValueError(f"mcmd.dask.fill cannot use {o.split('=', 1)[0].upper()}: it reads another file "
-                             f"whole (use mcmd.fill_file)")
-    height, width = arr.shape
-    spec = _steps.Spec(width, height, arr.dtype.name if arr.dtype.isnative else arr.dtype.str, gdal_type, nd,
-                       opts, dask.base.tokenize(arr, marr, gdal_type, nd, opts))
-    step, min_side, margin, whole = chunk_grid(width, height, opts)
-    if whole or fills_whole(width, height, opts):
-        out = _whole(arr, marr, spec)
-    else:
-        side = _chunk_side(chunks, arr, step, min_side)
-        out = _chunked(arr, marr, spec, side, min_side, margin)
+    marr = _mask_array(mask, arr)
+    bands = [arr] if arr.ndim == 2 else [arr[k] for k in range(arr.shape[0])]
+    nodatas = [_arrays.nodata_value(v, arr.dtype) for v in _arrays.band_nodata(nodata, len(bands))]
+    masks = [marr if marr is None or marr.ndim == 2 else marr[k] for k in range(len(bands))]
+    filled = [_fill_band(band, m, nd, opts, chunks) for band, m, nd in zip(bands, masks, nodatas)]
+    out = filled[0] if arr.ndim == 2 else da.stack(filled)
     return xarr.copy(data=out) if xarr is not None else out
 
 
+def _fill_band(arr: da.Array, marr: Optional[da.Array], nd: Any, opts: list, chunks: Optional[int]) -> da.Array:
+    if marr is None and nd is None and arr.dtype.kind != "f":
+        raise ValueError("the array has no nodata value or mask and cannot hold NaN: nothing marks the voids "
+                         "(pass nodata= or mask=)")
+    height, width = arr.shape
+    step, min_side, margin, whole = chunk_grid(width, height, opts)  # checks the options: the CLI's messages
+    for o in opts:
+        name, value = o.split("=", 1)
+        if name.upper() in _WHOLE_RASTER_OPTIONS:
+            raise ValueError(f"mcmd.dask.fill cannot use {name.upper()}: it reads another file whole "
+                             f"(use mcmd.fill_file)")
+        if name.upper() == "MORPH" and value.strip().upper() == "AUTO":
+            raise ValueError("mcmd.dask.fill cannot use MORPH=auto: its channels follow the drainage of the whole "
+                             "raster (use mcmd.fill_file, or mcmd.fill on an array)")
+    spec = _steps.Spec(width, height, arr.dtype.str, _arrays.gdal_type(arr.dtype), nd, opts,
+                       dask.base.tokenize(arr, marr, nd, opts))
+    if whole or fills_whole(width, height, opts):
+        return _whole(arr, marr, spec)
+    side = _chunk_side(chunks, arr, step, min_side)
+    return _chunked(arr, marr, spec, side, min_side, margin)
+
+
 def _as_dataarray(data: Any):
-    try:
-        import xarray
-    except ImportError:  # xarray is optional: arrays work without it
+    if not is_dataarray(data):
         return None
-    return data if isinstance(data, xarray.DataArray) else None
-
-
-def _nodata_of(xarr) -> Any:
-    try:
-        import rioxarray  # noqa: F401  (registers the .rio accessor)
-        nd = xarr.rio.nodata
-        if nd is not None and not (isinstance(nd, float) and np.isnan(nd)):
-            return nd.item() if hasattr(nd, "item") else nd
-    except ImportError:
-        pass
-    nd = xarr.attrs.get("_FillValue", xarr.encoding.get("_FillValue"))
-    return None if nd is None or (isinstance(nd, float) and np.isnan(nd)) else nd
+    from ..xarray import check_dims
+    check_dims(data)
+    return data
 
 
 def _mask_array(mask: Any, arr: da.Array) -> Optional[da.Array]:
     if mask is None:
         return None
-    m = mask.data if _as_dataarray(mask) is not None else mask
+    m = mask.data if is_dataarray(mask) else mask
     if not isinstance(m, da.Array):
         m = np.asarray(m)
-    if m.shape != arr.shape:
+    if m.shape != arr.shape and not (arr.ndim == 3 and m.shape == arr.shape[1:]):
         raise ValueError(f"the mask has shape {m.shape} but the array has shape {arr.shape}")
     if m.dtype.kind not in "biuf":
         raise ValueError(f"mask dtype {m.dtype} is not supported: expected bool or a number (0 = void)")
-    return m if isinstance(m, da.Array) else da.from_array(m, chunks=arr.chunks)
+    return m if isinstance(m, da.Array) else da.from_array(m, chunks=arr.chunks[-m.ndim:])
 
 
 def _chunk_side(chunks: Optional[int], arr: da.Array, step: int, min_side: int) -> int:
@@ -149,14 +96,6 @@ def _chunk_side(chunks: Optional[int], arr: da.Array, step: int, min_side: int) 
         raise ValueError(f"chunks must be a positive number of cells, got {chunks!r}")
     side = max(int(want), min_side)
     return -(-side // step) * step
-
-
-def _edges(length: int, side: int, min_side: int) -> list:
-    """Chunk edges: multiples of side; a short last chunk joins the one before."""
-    e = list(range(0, length, side))
-    if len(e) > 1 and length - e[-1] < min_side:
-        e.pop()
-    return e + [length]
 
 
 def _blocks(a: Optional[da.Array], shape) -> np.ndarray:
@@ -174,7 +113,7 @@ def _whole(arr: da.Array, marr: Optional[da.Array], spec: _steps.Spec) -> da.Arr
 
 def _chunked(arr: da.Array, marr: Optional[da.Array], spec: _steps.Spec, side: int, min_side: int,
              margin: int) -> da.Array:
-    ys, xs = _edges(spec.height, side, min_side), _edges(spec.width, side, min_side)
+    ys, xs = edges(spec.height, side, min_side), edges(spec.width, side, min_side)
     rows, cols = tuple(np.diff(ys)), tuple(np.diff(xs))
     arr = arr.rechunk((rows, cols))
     marr = None if marr is None else marr.rechunk((rows, cols))

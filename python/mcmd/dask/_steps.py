@@ -8,6 +8,7 @@ chunk summaries and keeps it while the fill runs.
 from __future__ import annotations
 
 import threading
+from collections import OrderedDict
 from typing import Any, NamedTuple, Optional
 
 import numpy as np
@@ -20,29 +21,91 @@ class Spec(NamedTuple):
     """What every task of one fill needs to know (small, picklable)."""
     width: int
     height: int
-    dtype: str          # numpy dtype name of the raster
+    dtype: str          # numpy dtype (its str) of the raster
     gdal_type: str      # its GDAL type name
     nodata: Any         # int, float or None
     options: list       # the library's NAME=VALUE options
     token: str          # names this fill's plan in a worker's cache
 
 
-_PLANS: dict = {}
+_PLANS: "OrderedDict[str, Any]" = OrderedDict()  # the plans of the last few fills (bands of one raster)
+_PLANS_KEPT = 4
 _PLANS_LOCK = threading.Lock()
 
 
+class Window(NamedTuple):
+    """Cells [x0, x0 + w) × [y0, y0 + h) of band `band` of the raster file
+    `path`, read by the task that needs them (nothing read travels)."""
+    path: str
+    band: int
+    x0: int
+    y0: int
+    w: int
+    h: int
+
+
+def read(window: Window, spec: Spec) -> tuple:
+    """The window's cells in the raster's dtype and the band's own validity
+    mask (its mask or alpha band, as the CLI reads them; None when the nodata
+    value alone marks the voids)."""
+    from osgeo import gdal
+    ds = gdal.OpenEx(window.path, gdal.OF_RASTER | gdal.OF_READONLY | gdal.OF_VERBOSE_ERROR)
+    b = ds.GetRasterBand(window.band)
+    cells = b.ReadAsArray(window.x0, window.y0, window.w, window.h)
+    if cells is None:
+        raise Error(f"cannot read '{window.path}': {gdal.GetLastErrorMsg()}")
+    cells = cells.view(np.dtype(spec.dtype)) if cells.dtype.itemsize == np.dtype(spec.dtype).itemsize else cells
+    flags = b.GetMaskFlags()
+    mask = None
+    if not flags & (gdal.GMF_ALL_VALID | gdal.GMF_NODATA):
+        mask = b.GetMaskBand().ReadAsArray(window.x0, window.y0, window.w, window.h)
+    return cells, mask
+
+
+def crop(read_block: tuple, origin, own) -> tuple:
+    """The chunk `own` out of a block read with its margin at `origin`."""
+    cells, mask = read_block
+    x, y = own[0] - origin[0], own[1] - origin[1]
+    rows, cols = slice(y, y + own[3]), slice(x, x + own[2])
+    return cells[rows, cols], None if mask is None else mask[rows, cols]
+
+
+def _block(block: Any, mask: Any, spec: Spec) -> tuple:
+    """(cells, mask) of a block given as an array, as a Window to read, or
+    as what `read` returned."""
+    if isinstance(block, Window):
+        block = read(block, spec)
+    if not isinstance(block, tuple):
+        return block, mask
+    cells, own = block
+    if own is None or mask is None:
+        return cells, own if mask is None else mask
+    return cells, (np.asarray(mask) != 0) & (own != 0)
+
+
 def _cells(block: np.ndarray, spec: Spec) -> np.ndarray:
-    """A C-contiguous, native-order copy of a block (the MEM band reads it in place)."""
+    """A C-contiguous, native-order copy of a block in the type the fill
+    runs in (the MEM band reads it in place)."""
     return _arrays.native_copy(np.asarray(block, dtype=np.dtype(spec.dtype)))
 
 
-def _valid(mask: Optional[np.ndarray]) -> Optional[np.ndarray]:
-    return None if mask is None else np.ascontiguousarray(np.asarray(mask) != 0, dtype=np.uint8)
+def _valid(mask: Optional[np.ndarray], block: Any = None) -> Optional[np.ndarray]:
+    """The validity of a block's cells: `mask` and a masked block's own mask."""
+    valid = None if mask is None else np.asarray(mask) != 0
+    if isinstance(block, np.ma.MaskedArray) and np.ma.getmask(block) is not np.ma.nomask:
+        own = ~np.ma.getmaskarray(block)
+        valid = own if valid is None else valid & own
+    return None if valid is None else np.ascontiguousarray(valid, dtype=np.uint8)
+
+
+def _result(out: np.ndarray, spec: Spec) -> np.ndarray:
+    return _arrays.to_dtype(out, np.dtype(spec.dtype), spec.nodata)
 
 
 def summarize(block, mask, spec: Spec, origin, own) -> dict:
     """Step 1: the chunk's void runs, known range and guide moments."""
-    return _mcmd.summarize_chunk(_cells(block, spec), _valid(mask), spec.gdal_type, spec.nodata, spec.options,
+    block, mask = _block(block, mask, spec)
+    return _mcmd.summarize_chunk(_cells(block, spec), _valid(mask, block), spec.gdal_type, spec.nodata, spec.options,
                                  tuple(origin), (spec.width, spec.height), tuple(own))
 
 
@@ -59,14 +122,18 @@ def plan(spec: Spec, summaries: list):
         p = _PLANS.get(spec.token)
         if p is None:
             p = _mcmd.ChunkedPlan(spec.width, spec.height, spec.gdal_type, spec.options, summaries)
-            _PLANS.clear()  # one fill at a time per worker keeps memory bounded
             _PLANS[spec.token] = p
+            while len(_PLANS) > _PLANS_KEPT:  # memory stays bounded
+                _PLANS.popitem(last=False)
+        else:
+            _PLANS.move_to_end(spec.token)
         return p
 
 
 def solve(summaries: list, block, mask, spec: Spec, origin, own) -> tuple:
     """Step 3: the windows and small voids the chunk owns, solved."""
-    return _mcmd.solve_chunk(plan(spec, summaries), _cells(block, spec), _valid(mask), spec.gdal_type, spec.nodata,
+    block, mask = _block(block, mask, spec)
+    return _mcmd.solve_chunk(plan(spec, summaries), _cells(block, spec), _valid(mask, block), spec.gdal_type, spec.nodata,
                              tuple(origin), tuple(own))
 
 
@@ -77,14 +144,16 @@ def part(solution: tuple, other) -> tuple:
 
 def blend(summaries: list, block, mask, spec: Spec, own, *around: tuple) -> np.ndarray:
     """Step 4: the chunk's cells, filled from the solutions around it."""
+    block, mask = _block(block, mask, spec)
     out = _cells(block, spec)
-    _mcmd.blend_chunk(plan(spec, summaries), out, _valid(mask), spec.gdal_type, spec.nodata, tuple(own),
+    _mcmd.blend_chunk(plan(spec, summaries), out, _valid(mask, block), spec.gdal_type, spec.nodata, tuple(own),
                       list(around))
-    return out.astype(np.dtype(spec.dtype), copy=False)
+    return _result(out, spec)
 
 
 def whole(block, mask, spec: Spec) -> np.ndarray:
     """A raster the CLI fills whole (or of one tile): one task, mcmd.fill's code."""
+    block, mask = _block(block, mask, spec)
     out = _cells(block, spec)
-    _mcmd.fill_array(out, _valid(mask), spec.gdal_type, spec.nodata, spec.options, None)
-    return out.astype(np.dtype(spec.dtype), copy=False)
+    _mcmd.fill_array(out, _valid(mask, block), spec.gdal_type, spec.nodata, spec.options, None)
+    return _result(out, spec)
