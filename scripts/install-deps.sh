@@ -8,6 +8,7 @@ packages=(
   libgtest-dev googletest                          # GoogleTest for ctest
   qgis python3-qgis qgis-providers python3-pytest  # the QGIS Processing provider and its tests
   pybind11-dev python3-dev                         # the Python package mcmd (python/)
+  python3-venv python3-pip python3-setuptools python3-wheel  # its pip build (pyproject.toml)
   python3-dask python3-distributed python3-xarray  # mcmd.dask: region-scale fills on Dask
   python3-rioxarray python3-rasterio python3-zarr  #   its reader/writer (GeoTIFF, Zarr)
   time zip                                         # /usr/bin/time -v for benchmarks, plugin zip
