@@ -19,6 +19,13 @@ class RadixHeap {
  public:
   bool empty() const { return size_ == 0; }
 
+  // Empty, ready for pushes at any level (keeps the buckets' capacity).
+  void clear() {
+    for (auto& b : bucket_) b.clear();
+    filled_ = last_ = 0;
+    next_ = size_ = 0;
+  }
+
   // Pre: level >= the level of the last pop; not NaN.
   void push(double level, std::int32_t cell) {
     put({key(level), cell});
