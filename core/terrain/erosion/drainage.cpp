@@ -1,0 +1,159 @@
+#include "terrain/erosion/drainage.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+
+namespace mcmd::terrain {
+
+namespace {
+
+// The neighbours, clockwise from the east: steps, index offsets of an
+// interior cell, and the inverse of their lengths.
+constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+std::array<std::int32_t, 8> offsets(int w) { return {1, w + 1, w, w - 1, -1, -w - 1, -w, -w + 1}; }
+constexpr double kInverseLength[8] = {1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2};
+// The width of flow through each side of a cell (Quinn et al. 1991's
+// contour lengths: ½ across a side, √2/4 across a corner).
+constexpr double kContour[8] = {0.5, 0.3535533905932738, 0.5, 0.3535533905932738,
+                                0.5, 0.3535533905932738, 0.5, 0.3535533905932738};
+
+double next_above(double v) {
+  if (v == 0.0) return 4.9406564584124654e-324;
+  const auto b = std::bit_cast<std::uint64_t>(v);
+  return std::bit_cast<double>(v > 0 ? b + 1 : b - 1);
+}
+
+bool on_border(std::int32_t i, int w, int h) {
+  const int x = i % w, y = i / w;
+  return x == 0 || y == 0 || x == w - 1 || y == h - 1;
+}
+
+// Where each interior cell sends its water (d.lower, d.receiver) and, for
+// the order, each cell's count of the cells sending it water.
+void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector<std::int32_t>& higher) {
+  const int w = d.w, h = d.h;
+  const auto off = offsets(w);
+  const std::size_t n = d.level.size();
+  d.receiver.assign(n, -1);
+  d.lower.assign(n, 0);
+  higher.assign(n, 0);
+  const bool divides = !divide.empty();
+  for (int y = 1; y < h - 1; ++y)
+    for (int x = 1; x < w - 1; ++x) {
+      const std::int32_t i = y * w + x;
+      const double zi = d.level[i];
+      unsigned mask = 0, open = 0;  // lower neighbours, and those that are not divides
+      for (int k = 0; k < 8; ++k)
+        if (zi > d.level[i + off[k]]) {
+          mask |= 1u << k;
+          if (!divides || !divide[i + off[k]]) open |= 1u << k;
+        }
+      if (open) mask = open;
+      double steepest = 0.0;
+      for (int k = 0; k < 8; ++k)
+        if (mask >> k & 1u) {
+          ++higher[i + off[k]];
+          const double s = (zi - d.level[i + off[k]]) * kInverseLength[k];
+          if (s > steepest) steepest = s, d.receiver[i] = i + off[k];
+        }
+      d.lower[i] = static_cast<std::uint8_t>(mask);
+    }
+}
+
+// A topological sort from the highest cells down (a cell once every higher
+// neighbour has passed its water on: Kahn's, depth first so that the
+// cells taken one after the other are mostly neighbours), spreading the
+// area on the way: each interior cell passes its area to its lower
+// neighbours in proportion to slope × contour length (Quinn et al. 1991).
+// d.order is the reverse: outlets first. `higher` ends at -1 everywhere.
+void spread_area(Drainage& d, std::vector<std::int32_t>& higher, std::vector<std::int32_t>& stack) {
+  const int w = d.w, h = d.h;
+  const auto off = offsets(w);
+  const std::size_t n = d.level.size();
+  d.area.assign(n, 1.0);
+  d.order.clear();
+  d.order.reserve(n);
+  stack.clear();
+  double share[8];
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (higher[seed] != 0) continue;
+    stack.push_back(static_cast<std::int32_t>(seed));
+    while (!stack.empty()) {
+      const std::int32_t i = stack.back();
+      stack.pop_back();
+      higher[i] = -1;
+      d.order.push_back(i);
+      if (on_border(i, w, h)) continue;
+      const double zi = d.level[i];
+      const unsigned mask = d.lower[i];
+      double total = 0.0;
+      for (int j = 0; j < 8; ++j) {
+        share[j] = mask >> j & 1u ? (zi - d.level[i + off[j]]) * kInverseLength[j] * kContour[j] : 0.0;
+        total += share[j];
+      }
+      const double a = d.area[i] / total;  // total > 0: an interior cell has a lower neighbour
+      for (int j = 0; j < 8; ++j)
+        if (share[j] > 0) {
+          const std::int32_t t = i + off[j];
+          d.area[t] += a * share[j];
+          if (--higher[t] == 0) stack.push_back(t);
+        }
+    }
+  }
+  std::reverse(d.order.begin(), d.order.end());
+}
+
+void route(Drainage& d, const std::vector<std::uint8_t>& divide, DrainageScratch& s) {
+  receivers(d, divide, s.count);
+  spread_area(d, s.count, s.stack);
+}
+
+}  // namespace
+
+void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const std::vector<std::uint8_t>& divide,
+           int w, int h, Drainage& d, DrainageScratch& s) {
+  const std::size_t n = z.size();
+  d.w = w, d.h = h;
+  d.level.resize(n);
+  s.mark.assign(n, 0);
+  s.heap.clear();
+  for (std::int32_t i = 0; i < static_cast<std::int32_t>(n); ++i)
+    if (on_border(i, w, h)) s.mark[i] = 1, d.level[i] = z[i], s.heap.push(z[i], i);
+  const auto off = offsets(w);
+  while (!s.heap.empty()) {
+    const auto [lv, i] = s.heap.pop();
+    const double above = next_above(lv);
+    const bool edge = on_border(i, w, h);  // its neighbours need bounds tests
+    for (int k = 0; k < 8; ++k) {
+      if (edge) {
+        const int x = i % w + kDx[k], y = i / w + kDy[k];
+        if (x < 0 || y < 0 || x >= w || y >= h) continue;
+      }
+      const std::int32_t j = i + off[k];
+      if (s.mark[j]) continue;
+      s.mark[j] = 1;
+      d.level[j] = std::max(z[j], above);
+      s.heap.push(d.level[j], j);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (!fixed[i]) z[i] = d.level[i];
+  route(d, divide, s);
+}
+
+void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixed,
+                   const std::vector<std::uint8_t>& divide, Drainage& d, DrainageScratch& s) {
+  for (const std::int32_t i : d.order) {
+    const std::int32_t r = d.receiver[i];
+    double v = z[i];
+    if (r >= 0) v = std::max(v, next_above(d.level[r]));
+    d.level[i] = v;
+    if (!fixed[i]) z[i] = v;
+  }
+  route(d, divide, s);
+}
+
+}  // namespace mcmd::terrain

@@ -1,0 +1,57 @@
+// Where the water of an eroding terrain goes, recomputed each time step.
+// Water runs on `level`: the heights, raised where they would hold water
+// (sediment fills the lakes), so that every cell but the border's has a
+// lower neighbour. Each cell sends its water down its steepest descent
+// (D8, the receiver the stream power erodes towards) and spreads its
+// drainage area over all of its lower neighbours (multiple flow
+// directions: hillslopes do not streak along the grid). The raster's
+// border drains out. Divide cells (a drawn ridge) take no water while a
+// cell has another lower neighbour: the land drains away from them on
+// both sides, so that they stay divides.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "morphology/radix_heap.hpp"
+
+namespace mcmd::terrain {
+
+struct Drainage {
+  int w = 0, h = 0;
+  std::vector<double> level;           // the surface the water runs on
+  std::vector<std::int32_t> receiver;  // steepest lower neighbour, -1 on the border
+  std::vector<std::uint8_t> lower;     // bit k: the water goes to neighbour k (drainage.cpp's order)
+  std::vector<std::int32_t> order;     // every cell after all of its lower neighbours
+  std::vector<double> area;            // cells draining through each (itself included)
+};
+
+// Scratch reused from step to step.
+struct DrainageScratch {
+  morph::RadixHeap heap;
+  std::vector<std::uint8_t> mark;
+  std::vector<std::int32_t> count, stack;
+};
+
+// Fill every depression of z (Priority-Flood with ε from the border: each
+// cell ends strictly above the cell that reached it) into d.level, raise the
+// free cells of z to it (a fixed cell keeps its height, water passes over
+// it), then route(). Pre: z finite, w, h >= 3.
+// `divide`: w·h flags of the divide cells (empty: none).
+void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const std::vector<std::uint8_t>& divide,
+           int w, int h, Drainage& d, DrainageScratch& scratch);
+
+// After a step moved z a little: raise the cells that sank to or below
+// their last receiver (which was lower) just above it, outlets first, as
+// flood() would (cheaply: along last step's network), then route().
+// Pre: d holds last step's drainage of these w×h cells.
+void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixed,
+                   const std::vector<std::uint8_t>& divide, Drainage& d, DrainageScratch& scratch);
+
+// The distance from cell i to its neighbour j in cells (1 or √2).
+inline double step_length(std::int32_t i, std::int32_t j, int w) {
+  const std::int32_t d = i > j ? i - j : j - i;
+  return d == 1 || d == w ? 1.0 : 1.4142135623730951;
+}
+
+}  // namespace mcmd::terrain

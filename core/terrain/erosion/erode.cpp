@@ -1,0 +1,176 @@
+// erode(): the checks and the coarse-to-fine landscape evolution
+// (mcmd/erosion.hpp).
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "mcmd/erosion.hpp"
+#include "morphology/flow.hpp"
+#include "terrain/erosion/evolve.hpp"
+#include "terrain/erosion/line_guard.hpp"
+#include "terrain/erosion/pyramid.hpp"
+#include "thin_plate/thin_plate.hpp"
+
+namespace mcmd {
+
+namespace {
+
+using terrain::ErosionGrid;
+
+// The length of the hillslopes between the smallest valleys, in elevation
+// units (metres on a DEM in metres): diffusion D = K·ℓ² balances the
+// stream power there.
+constexpr double kHillslopeLength = 200.0;
+// Steps at most: on the coarsest grid (until its network converges), on
+// the grids between, and on the finest with EROSION=auto.
+constexpr int kCoarsestSteps = 300, kFinerSteps = 10, kAutoSteps = 40;
+
+[[noreturn]] void bad(const std::string& why) { throw std::invalid_argument(why); }
+
+bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
+
+// The finest grid: heights in cells; the constraints fixed but the ridge
+// cells, the border fixed as the outlets. Ridge cells erode with the land
+// as divides (no water enters them) and are warped back at the end: held
+// at their heights, the land beside them would rise above them.
+ErosionGrid finest(const Canvas& c, const ErosionParams& p) {
+  ErosionGrid g;
+  g.w = c.w, g.h = c.h;
+  g.initial.resize(c.cells());
+  g.fixed.resize(c.cells());
+  for (int y = 0; y < c.h; ++y)
+    for (int x = 0; x < c.w; ++x) {
+      const std::size_t i = c.index(x, y);
+      g.initial[i] = c.z[i] / p.cell_size;
+      const bool ridge = c.state[i] == CellState::ridge;
+      g.fixed[i] = is_constraint(c.state[i]) && !ridge ? 2 : on_border(x, y, c.w, c.h) ? 1 : 0;
+      if (ridge) {
+        if (g.divide.empty()) g.divide.assign(c.cells(), 0);
+        g.divide[i] = 1;
+      }
+    }
+  return g;
+}
+
+std::vector<double> flooded(const std::vector<double>& z, int w, int h) {
+  const std::vector<morph::FlowCell> land(z.size(), morph::FlowCell::land);
+  return morph::flood_levels(z.data(), w, h, land.data());
+}
+
+// The uplift pattern, scaled to a mean of 1 over the free cells.
+std::vector<double> uplift_of(const ErosionGrid& g, const ErosionParams& p) {
+  std::vector<double> u(g.initial.size(), 1.0);
+  if (p.uplift == UpliftPattern::map) u = p.uplift_map;
+  if (p.uplift == UpliftPattern::terrain) {
+    // The height of the filled terrain above its lowest cell, with a floor
+    // so that no free cell is left without uplift (it would stay flat).
+    const std::vector<double> filled = flooded(g.initial, g.w, g.h);
+    const auto [lo, hi] = std::minmax_element(filled.begin(), filled.end());
+    const double range = *hi > *lo ? *hi - *lo : 1.0;
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = 0.1 + (filled[i] - *lo) / range;
+  }
+  double sum = 0.0;
+  std::size_t free = 0;
+  for (std::size_t i = 0; i < u.size(); ++i)
+    if (!g.fixed[i]) sum += u[i], ++free;
+  if (free == 0 || sum <= 0.0) return std::vector<double>(u.size(), 0.0);
+  for (double& v : u) v *= static_cast<double>(free) / sum;
+  return u;
+}
+
+// The finer grid's start: the coarser result, plus the initial terrain's
+// detail that the coarser grid cannot hold; fixed cells at their heights.
+std::vector<double> refine(const std::vector<double>& z, const ErosionGrid& coarse, const ErosionGrid& fine) {
+  std::vector<double> up = terrain::prolong(z, coarse.w, coarse.h, fine.w, fine.h);
+  const std::vector<double> smooth = terrain::prolong(coarse.initial, coarse.w, coarse.h, fine.w, fine.h);
+  for (std::size_t i = 0; i < up.size(); ++i)
+    up[i] = fine.fixed[i] ? fine.initial[i] : up[i] + (fine.initial[i] - smooth[i]);
+  return up;
+}
+
+// The eroded heights (finest cells) into the canvas. The ridge cells eroded
+// with the land: a smooth warp, the thin plate through their residuals (0
+// at the other constraints), brings them back exactly.
+void write_back(Canvas& c, const std::vector<double>& z, const ErosionGrid& g, double cell_size, int threads) {
+  std::vector<double> warp(c.cells(), 0.0);
+  bool ridges = false;
+  for (std::size_t i = 0; i < c.cells(); ++i)
+    if (c.state[i] == CellState::ridge && !g.fixed[i]) warp[i] = c.z[i] - z[i] * cell_size, ridges = true;
+  if (ridges) {
+    ThinPlateSchedule schedule;
+    schedule.vcycle.threads = threads;
+    thin_plate_smooth(FieldView{c.w, c.h, warp.data(), c.state.data()}, schedule);
+  }
+  for (std::size_t i = 0; i < c.cells(); ++i)
+    if (!is_constraint(c.state[i])) c.z[i] = z[i] * cell_size + warp[i];
+  terrain::keep_ridges_crests(c);
+  terrain::keep_rivers_draining(c);
+}
+
+}  // namespace
+
+void check_erosion(const ErosionParams& p, int w, int h) {
+  if (p.steps != kErodeAuto && (p.steps < 0 || p.steps > kMaxErodeSteps))
+    bad("the erosion steps must be auto or a whole number in [0, " + std::to_string(kMaxErodeSteps) + "]");
+  if (!std::isfinite(p.K) || p.K < 0) bad("the erodibility K must be a number >= 0 (0: automatic)");
+  if (!std::isfinite(p.m) || p.m < 0 || p.m > 2) bad("the stream-power exponent m must be in [0, 2]");
+  if (!std::isfinite(p.n) || p.n < 0.5 || p.n > 4) bad("the stream-power exponent n must be in [0.5, 4]");
+  if (!std::isfinite(p.diffusion) || p.diffusion < 0 || p.diffusion > 100)
+    bad("the hillslope diffusion must be a factor in [0, 100]");
+  if (!std::isfinite(p.talus) || p.talus <= 0 || p.talus > 90) bad("the talus angle must be in (0, 90] degrees");
+  if (!std::isfinite(p.cell_size) || p.cell_size <= 0) bad("the cell size must be a number > 0");
+  if (p.uplift == UpliftPattern::map) {
+    if (p.uplift_map.size() != static_cast<std::size_t>(w) * h) bad("the uplift map must hold one rate per cell");
+    for (double u : p.uplift_map)
+      if (!std::isfinite(u) || u < 0) bad("the uplift map's rates must be finite numbers >= 0");
+  }
+}
+
+ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& progress) {
+  check_erosion(p, canvas.w, canvas.h);
+  for (double z : canvas.z)
+    if (!std::isfinite(z)) bad("the terrain to erode must be finite everywhere");
+  ErosionReport out;
+  report(progress, 0.0);
+  if (p.steps == 0 || canvas.w < 3 || canvas.h < 3) {
+    report(progress, 1.0);
+    return out;
+  }
+  std::vector<ErosionGrid> grids{finest(canvas, p)};
+  grids[0].uplift = uplift_of(grids[0], p);
+  while (std::max(grids.back().w, grids.back().h) > terrain::kCoarsestSide) grids.push_back(terrain::coarser(grids.back()));
+  out.grids = static_cast<int>(grids.size());
+
+  terrain::Evolution e;
+  e.K = p.K;
+  e.m = p.m, e.n = p.n;
+  // With K automatic the relief of the uneroded terrain is held; a given K
+  // lets the relief follow from it and the uplift.
+  if (p.K == 0.0) e.relief = terrain::relief(flooded(grids[0].initial, grids[0].w, grids[0].h), grids[0].fixed);
+  e.hillslope = kHillslopeLength / p.cell_size;
+  e.diffusion = p.diffusion;
+  e.talus = p.talus >= 90 ? 0.0 : std::tan(p.talus * M_PI / 180.0);
+  e.threads = std::max(1, p.threads);
+
+  std::vector<double> z;
+  const std::size_t levels = grids.size();
+  for (std::size_t l = levels; l-- > 0;) {
+    const ErosionGrid& g = grids[l];
+    z = l + 1 == levels ? g.initial : refine(z, grids[l + 1], g);
+    const bool coarsest = l + 1 == levels, last = l == 0;
+    const int max_steps = last ? (p.steps == kErodeAuto ? kAutoSteps : p.steps) : coarsest ? kCoarsestSteps : kFinerSteps;
+    // Progress: the coarser grids share the first half, the finest the rest.
+    const double lo = last ? 0.5 : 0.5 * static_cast<double>(levels - 1 - l) / levels;
+    const double hi = last ? 1.0 : 0.5 * static_cast<double>(levels - l) / levels;
+    const terrain::GridRun run = evolve(z, g, e, max_steps, !last || p.steps == kErodeAuto, sub_progress(progress, lo, hi));
+    if (last) out.steps = run.steps, out.converged = run.converged, out.moved = run.moved;
+    else out.coarse_steps += run.steps;
+  }
+  out.K = e.K;
+  write_back(canvas, z, grids[0], p.cell_size, e.threads);
+  report(progress, 1.0);
+  return out;
+}
+
+}  // namespace mcmd

@@ -1,0 +1,85 @@
+#include "terrain/erosion/evolve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "terrain/erosion/drainage.hpp"
+#include "terrain/erosion/hillslope.hpp"
+#include "terrain/erosion/stream_power.hpp"
+
+namespace mcmd::terrain {
+
+namespace {
+
+// Converged: under 2 % of the channels (cells draining at least kChannel
+// cells of the finest grid) changed receiver in a step, and the relief is
+// within 1 % of its aim.
+constexpr double kMovedChannels = 0.02, kReliefTolerance = 0.01;
+constexpr double kChannel = 100.0;
+// A grid's hillslopes are at least this many of its cells long: each grid
+// resolves the valleys of its own scale, the finer grids the finer ones.
+constexpr double kGridHillslope = 2.0;
+
+double moved_share(const std::vector<std::int32_t>& before, const Drainage& d, double spacing) {
+  if (before.size() != d.receiver.size()) return 1.0;
+  const double channel = kChannel / (spacing * spacing);
+  std::size_t moved = 0, channels = 0;
+  for (std::size_t i = 0; i < before.size(); ++i)
+    if (d.area[i] >= channel) ++channels, moved += before[i] != d.receiver[i];
+  return channels ? static_cast<double>(moved) / static_cast<double>(channels) : 0.0;
+}
+
+}  // namespace
+
+double relief(const std::vector<double>& z, const std::vector<std::uint8_t>& fixed) {
+  double lo = HUGE_VAL, sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (fixed[i]) lo = std::min(lo, z[i]);
+    else sum += z[i], ++n;
+  return n && lo < HUGE_VAL ? sum / static_cast<double>(n) - lo : 0.0;
+}
+
+GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int max_steps, bool until_converged,
+               const ProgressFn& progress) {
+  GridRun run;
+  StreamPower sp{e.K, e.m, e.n, g.spacing};
+  Drainage d;
+  DrainageScratch scratch;
+  std::vector<std::int32_t> previous;
+  const bool trace = std::getenv("MCMD_EROSION_TRACE") != nullptr;
+  for (int s = 0; s < max_steps; ++s) {
+    report(progress, static_cast<double>(s) / max_steps);
+    if (s == 0) flood(z, g.fixed, g.divide, g.w, g.h, d, scratch);
+    else keep_draining(z, g.fixed, g.divide, d, scratch);
+    if (sp.K == 0.0) e.K = sp.K = steady_state_erodibility(g.initial, g.uplift, g.fixed, d, sp);
+    if (!(sp.K > 0.0)) break;  // no relief to keep: nothing erodes
+    // A step of one cell² of diffusion on this grid: D·dt = spacing².
+    const double ell = std::max(e.hillslope, kGridHillslope * g.spacing);
+    const double dt = g.spacing * g.spacing / (sp.K * ell * ell);
+    stream_power_step(z, g.uplift, e.rate, g.fixed, d, sp, dt);
+    diffuse(z, g.fixed, g.w, g.h, e.diffusion, e.threads);
+    if (e.talus > 0) limit_slopes(z, g.fixed, g.w, g.h, e.talus * g.spacing);
+    ++run.steps;
+    run.moved = moved_share(previous, d, g.spacing);
+    // Hold the relief: steady-state heights scale as the uplift rate^(1/n).
+    double ratio = 1.0;
+    if (e.relief > 0) {
+      ratio = relief(z, g.fixed) / e.relief;
+      if (ratio > 0) e.rate /= std::pow(ratio, 0.5 * e.n);
+    }
+    if (trace)
+      std::fprintf(stderr, "erosion %dx%d step %d K %.4g rate %.4g moved %.5f relief %.4f\n", g.w, g.h, s, sp.K, e.rate,
+                   run.moved, ratio);
+    previous = d.receiver;
+    if (until_converged && run.moved < kMovedChannels && std::fabs(ratio - 1.0) < kReliefTolerance) {
+      run.converged = true;
+      break;
+    }
+  }
+  return run;
+}
+
+}  // namespace mcmd::terrain

@@ -1,0 +1,40 @@
+// The time steps of one grid of the erosion: drain, stream power with
+// uplift, hillslope diffusion and talus, until the drainage network stops
+// changing or a step count is spent.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mcmd/progress.hpp"
+#include "terrain/erosion/pyramid.hpp"
+
+namespace mcmd::terrain {
+
+struct Evolution {
+  double K = 0.0;          // erodibility (heights and lengths in finest cells); 0: a first guess from the network
+  double m = 0.5, n = 1.0;
+  double rate = 1.0;       // a factor of every uplift rate
+  double relief = 0.0;     // > 0: steer `rate` so that relief() stays at this
+  double hillslope = 1.0;  // the hillslope length ℓ in finest cells: diffusion D = K·ℓ²
+  double diffusion = 1.0;  // a factor of D
+  double talus = 0.0;      // the slope of repose (tangent); 0: none
+  int threads = 1;
+};
+
+struct GridRun {
+  int steps = 0;
+  bool converged = false;
+  double moved = 1.0;  // share of the channels whose receiver changed in the last step
+};
+
+// The mean height of the free cells above the lowest fixed cell.
+double relief(const std::vector<double>& z, const std::vector<std::uint8_t>& fixed);
+
+// Steps on grid g from z (heights in finest cells): at most max_steps, fewer
+// when `until_converged` and the network and the relief stopped changing.
+// Updates e.K (its first guess) and e.rate (the relief's steering).
+GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int max_steps, bool until_converged,
+               const ProgressFn& progress);
+
+}  // namespace mcmd::terrain

@@ -1,0 +1,33 @@
+// The coarse-to-fine grids of the erosion: grid l+1 has a cell for every
+// other cell of grid l (cell (X, Y) over cell (2X, 2Y)), down to at most
+// kCoarsestSide cells a side. Restriction is full weighting (¼, ½, ¼ in
+// each direction), prolongation Catmull-Rom: both pure functions of their
+// input, so every grid is the same for any thread count.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace mcmd::terrain {
+
+constexpr int kCoarsestSide = 320;
+
+struct ErosionGrid {
+  int w = 0, h = 0;
+  double spacing = 1.0;             // cell side in finest-grid cells
+  std::vector<double> initial;      // the uneroded terrain, in finest-grid cells
+  std::vector<double> uplift;       // relative uplift rate
+  std::vector<std::uint8_t> fixed;  // 2: a constraint, 1: the border, 0: free
+  std::vector<std::uint8_t> divide;  // free cells the water does not enter (drawn ridges); empty: none
+};
+
+// The next coarser grid of g: fixed where a fixed cell of g (other than its
+// border) lies in the 3×3 below, at their mean height, so that lines of
+// constraints stay connected; its border fixed too; a divide where one is
+// in the 3×3 below.
+ErosionGrid coarser(const ErosionGrid& g);
+
+// A cw×ch field on the w×h grid below it.
+std::vector<double> prolong(const std::vector<double>& field, int cw, int ch, int w, int h);
+
+}  // namespace mcmd::terrain
