@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <limits>
 #include <string>
 
@@ -10,6 +11,8 @@
 #include "lib/options.hpp"
 #include "lib/pixel_type.hpp"
 #include "lib/terrain_sketch.hpp"
+#include "lib/void_cap.hpp"
+#include "mcmd/erosion.hpp"
 #include "mcmd/fill_raster.hpp"
 #include "mcmd/peaks.hpp"
 #include "mcmd/skeleton.hpp"
@@ -144,6 +147,44 @@ void write_canvas(GDALRasterBand& target, const Canvas& c, bool unknown_as_nodat
   }
 }
 
+// A cell's side in metres: from the CRS and geotransform, the geotransform
+// alone (its unit), or 30 m (SRTM 1″'s spacing) without one.
+double cell_side(GDALRasterBand& target) {
+  GDALDataset* ds = target.GetDataset();
+  double gt[6];
+  if (!ds || ds->GetGeoTransform(gt) != CE_None) return 30.0;
+  const OGRSpatialReference* srs = ds->GetSpatialRef();
+  if (srs && !srs->IsEmpty()) return std::sqrt(cell_area_m2(*ds));
+  return std::sqrt(std::fabs(gt[1] * gt[5] - gt[2] * gt[4]));
+}
+
+// UPLIFT=FILE: band 1 of a raster of the terrain's size, relative rates >= 0.
+std::vector<double> uplift_map(const std::string& path, int w, int h) {
+  CPLErrorReset();
+  std::unique_ptr<GDALDataset> ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  if (!ds) refuse("cannot open the uplift map '" + path + "': " + (CPLGetLastErrorMsg()[0] ? CPLGetLastErrorMsg() : "not a raster"));
+  if (ds->GetRasterXSize() != w || ds->GetRasterYSize() != h)
+    refuse("the uplift map '" + path + "' is " + size_text(ds->GetRasterXSize(), ds->GetRasterYSize()) +
+           " but the terrain is " + size_text(w, h));
+  std::vector<double> u(static_cast<std::size_t>(w) * h);
+  check_io(ds->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, w, h, u.data(), w, h, GDT_Float64, 0, 0, nullptr),
+           ("cannot read the uplift map '" + path + "'").c_str());
+  for (double v : u)
+    if (!std::isfinite(v) || v < 0) refuse("the uplift map '" + path + "' holds a rate that is not a number >= 0");
+  return u;
+}
+
+void erode_terrain(Canvas& c, GDALRasterBand& target, bool has_sketch, const TerrainOptions& o, int threads,
+                   const ProgressFn& progress) {
+  ErosionParams e = o.erosion;
+  e.steps = erosion_steps(o, has_sketch);
+  if (e.steps == 0) return;
+  e.threads = threads;
+  e.cell_size = cell_side(target);
+  if (e.uplift == UpliftPattern::map) e.uplift_map = uplift_map(o.uplift_file, c.w, c.h);
+  erode(c, e, progress);
+}
+
 }  // namespace
 
 Canvas terrain_constraints(GDALRasterBand& target, GDALRasterBand* sketch, const TerrainOptions& o) {
@@ -166,7 +207,8 @@ void make_terrain(GDALRasterBand& target, GDALRasterBand* sketch, const TerrainO
   report(progress, 0.1);
   TerrainParams params = o.terrain;
   params.threads = effective_threads(params.threads);
-  synthesize(c, params, sub_progress(progress, 0.1, 0.9));
+  synthesize(c, params, sub_progress(progress, 0.1, 0.6));
+  erode_terrain(c, target, sketch != nullptr, o, params.threads, sub_progress(progress, 0.6, 0.9));
   if (o.median > 0) median_filter(c, o.median, o.median_passes, o.median_all, params.threads);
   report(progress, 0.95);
   write_canvas(target, c, params.method == TerrainMethod::none);

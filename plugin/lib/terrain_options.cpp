@@ -126,6 +126,35 @@ void set_points(TerrainOptions& o, const std::string& n, const std::string& v) {
   }
 }
 
+void set_erosion(TerrainOptions& o, const std::string& n, const std::string& v) {
+  const std::string u = upper(v);
+  o.has_erosion = true;
+  if (u == "AUTO" || u == "YES") o.erosion.steps = kErodeAuto;
+  else if (u == "NO" || u == "NONE") o.erosion.steps = 0;
+  else o.erosion.steps = integer_in(n, v, 0, kMaxErodeSteps);
+}
+
+// "K,m,n", K a number > 0 or auto.
+void set_erosion_law(TerrainOptions& o, const std::string& n, const std::string& v) {
+  const std::string want = "K,m,n (K > 0 or auto, m in [0, 2], n in [0.5, 4]; e.g. auto,0.5,1)";
+  const CPLStringList parts(CSLTokenizeString2(v.c_str(), ", ", 0));
+  if (parts.size() != 3) fail(n, v, want);
+  const bool automatic = upper(parts[0]) == "AUTO";
+  const double K = automatic ? 0.0 : number(n, parts[0], want);
+  const double m = number(n, parts[1], want), e = number(n, parts[2], want);
+  if ((!automatic && !(K > 0)) || m < 0 || m > 2 || e < 0.5 || e > 4) fail(n, v, want);
+  o.erosion.K = K;
+  o.erosion.m = m;
+  o.erosion.n = e;
+}
+
+void set_uplift(TerrainOptions& o, const std::string& n, const std::string& v) {
+  const std::string u = upper(v);
+  if (u == "TERRAIN") o.erosion.uplift = UpliftPattern::terrain, o.uplift_file.clear();
+  else if (u == "UNIFORM") o.erosion.uplift = UpliftPattern::uniform, o.uplift_file.clear();
+  else o.erosion.uplift = UpliftPattern::map, o.uplift_file = file_name(n, v);
+}
+
 using Setter = std::function<void(TerrainOptions&, const std::string&, const std::string&)>;
 
 const std::map<std::string, Setter>& setters() {
@@ -164,6 +193,19 @@ const std::map<std::string, Setter>& setters() {
        }},
       {"MEDIAN_PASSES", [](TerrainOptions& o, auto& n, auto& v) { o.median_passes = integer_in(n, v, 1, 100); }},
       {"MEDIAN_ALL", [](TerrainOptions& o, auto& n, auto& v) { o.median_all = yes_no(n, v); }},
+      {"EROSION", set_erosion},
+      {"EROSION_LAW", set_erosion_law},
+      {"UPLIFT", set_uplift},
+      {"DIFFUSION",
+       [](TerrainOptions& o, auto& n, auto& v) {
+         o.erosion.diffusion = number(n, v, "a factor in [0, 100]");
+         if (o.erosion.diffusion < 0 || o.erosion.diffusion > 100) fail(n, v, "a factor in [0, 100]");
+       }},
+      {"TALUS",
+       [](TerrainOptions& o, auto& n, auto& v) {
+         o.erosion.talus = number(n, v, "an angle in (0, 90] degrees");
+         if (!(o.erosion.talus > 0) || o.erosion.talus > 90) fail(n, v, "an angle in (0, 90] degrees");
+       }},
   };
   return table;
 }
@@ -183,7 +225,14 @@ constexpr double kDefaultH = 0.7;  // rolling relief (fillnodata's 0.5 looks lik
 const char* terrain_option_names() {
   return "METHOD, SCHEME, SHARPNESS, RS, H, RT, SEED, I, I_BU, RIDGE_I, RIDGE_I_BU, RIVER_I, RIVER_I_BU, DELTA, "
          "UNKNOWN, ZRANGE, SKELETON, RIDGE_COUPLES, RIVER_PARTICLES, PEAKS, PEAKS_NOISE, PEAKS_THRESHOLD, POINTS, "
-         "STATES, RIDGES, RIVERS, RIDGE_Z, RIVER_Z, UPSAMPLE, MEDIAN, MEDIAN_PASSES, MEDIAN_ALL, NUM_THREADS";
+         "STATES, RIDGES, RIVERS, RIDGE_Z, RIVER_Z, UPSAMPLE, MEDIAN, MEDIAN_PASSES, MEDIAN_ALL, EROSION, EROSION_LAW, "
+         "UPLIFT, DIFFUSION, TALUS, NUM_THREADS";
+}
+
+int erosion_steps(const TerrainOptions& o, bool has_sketch) {
+  if (o.has_erosion) return o.erosion.steps;
+  if (o.terrain.method == TerrainMethod::none || has_sketch || !o.peaks.empty()) return 0;
+  return kErodeAuto;
 }
 
 TerrainOptions parse_terrain_options(CSLConstList options) {

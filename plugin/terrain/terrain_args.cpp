@@ -25,7 +25,8 @@ const std::map<std::string, std::string>& option_flags() {
       {"-peaks", "PEAKS"},       {"-peaks-noise", "PEAKS_NOISE"}, {"-peaks-threshold", "PEAKS_THRESHOLD"},
       {"-states", "STATES"},     {"-ridges", "RIDGES"},       {"-rivers", "RIVERS"},
       {"-ridge-z", "RIDGE_Z"},   {"-river-z", "RIVER_Z"},     {"-upsample", "UPSAMPLE"},   {"-median", "MEDIAN"},
-      {"-median-passes", "MEDIAN_PASSES"},
+      {"-median-passes", "MEDIAN_PASSES"}, {"-erode", "EROSION"}, {"-erosion", "EROSION_LAW"},
+      {"-uplift", "UPLIFT"},     {"-diffusion", "DIFFUSION"}, {"-talus", "TALUS"},
   };
   return table;
 }
