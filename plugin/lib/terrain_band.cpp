@@ -4,6 +4,7 @@
 #include <cstring>
 #include <memory>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "lib/errors.hpp"
@@ -174,15 +175,22 @@ std::vector<double> uplift_map(const std::string& path, int w, int h) {
   return u;
 }
 
-void erode_terrain(Canvas& c, GDALRasterBand& target, bool has_sketch, const TerrainOptions& o, int threads,
-                   const ProgressFn& progress) {
+// The erosion asked for (steps 0: none), its uplift map read and its
+// parameters checked before anything is made.
+ErosionParams erosion_of(GDALRasterBand& target, bool has_sketch, const TerrainOptions& o, int threads) {
   ErosionParams e = o.erosion;
   e.steps = erosion_steps(o, has_sketch);
-  if (e.steps == 0) return;
+  if (e.steps == 0) return e;
   e.threads = threads;
   e.cell_size = cell_side(target);
-  if (e.uplift == UpliftPattern::map) e.uplift_map = uplift_map(o.uplift_file, c.w, c.h);
-  erode(c, e, progress);
+  const int w = target.GetXSize(), h = target.GetYSize();
+  if (e.uplift == UpliftPattern::map) e.uplift_map = uplift_map(o.uplift_file, w, h);
+  try {
+    check_erosion(e, w, h);
+  } catch (const std::invalid_argument& err) {
+    refuse(err.what());
+  }
+  return e;
 }
 
 }  // namespace
@@ -207,8 +215,10 @@ void make_terrain(GDALRasterBand& target, GDALRasterBand* sketch, const TerrainO
   report(progress, 0.1);
   TerrainParams params = o.terrain;
   params.threads = effective_threads(params.threads);
-  synthesize(c, params, sub_progress(progress, 0.1, 0.6));
-  erode_terrain(c, target, sketch != nullptr, o, params.threads, sub_progress(progress, 0.6, 0.9));
+  const ErosionParams erosion = erosion_of(target, sketch != nullptr, o, params.threads);
+  const double made = erosion.steps == 0 ? 0.9 : 0.5;  // the erosion takes the rest
+  synthesize(c, params, sub_progress(progress, 0.1, made));
+  if (erosion.steps != 0) erode(c, erosion, sub_progress(progress, made, 0.9));
   if (o.median > 0) median_filter(c, o.median, o.median_passes, o.median_all, params.threads);
   report(progress, 0.95);
   write_canvas(target, c, params.method == TerrainMethod::none);

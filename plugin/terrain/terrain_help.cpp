@@ -127,6 +127,23 @@ Synthesis:
   -threads n       Worker threads or ALL_CPUS (default): -threads 1.
   -o NAME=VALUE    Any MCMDTerrain option, e.g. -o RIDGE_COUPLES=4.
 
+Erosion (landscape evolution that grows valleys into the terrain; on for
+-skeleton and from-scratch terrains, off for a sketch and -peaks; constraint
+cells never change, rivers keep draining along their course):
+  -erode STEPS|auto|0  Steps on the finest grid (default auto: until the
+                   network converges; 0: none). Coarser grids run first.
+  -erosion K,m,n   Stream-power law E = K A^m S^n: K > 0 or auto (default:
+                   the uneroded terrain's mean height is kept), m in [0, 2],
+                   n in [0.5, 4] (default auto,0.5,1): -erosion auto,0.45,1.
+  -uplift terrain|uniform|FILE  Where the land rises: with the uneroded
+                   terrain's height (default: its mountains stay), the same
+                   everywhere, or a raster of the terrain's size of relative
+                   rates >= 0: -uplift uplift.tif.
+  -diffusion f     Hillslope creep, a factor of the default (0: none; more:
+                   rounder hills, fewer small valleys): -diffusion 2.
+  -talus degrees   Slopes steeper than this fail (thermal erosion; default
+                   none): -talus 35.
+
 After the synthesis:
   -median N        N x N median filter of the synthesised cells (odd N), as
                    the paper's material example (Fig. 13): -median 5.
@@ -138,6 +155,7 @@ Examples:
   mcmd_terrain -size 1025 1025 -rs 300m -seed 4 -hillshade t.png t.tif
   mcmd_terrain -zrange 0 2000 -rs 0.2 -states lines.png sketch.png t.tif
   mcmd_terrain -skeleton -size 513 513 -rs 0.5 -method paper-te -Ibu 6 t.tif
+  mcmd_terrain -size 1025 1025 -rs 300m -erode 0 noise_only.tif
   mcmd_terrain -upsample 4 -rs auto coarse_dem.tif fine_dem.tif
 
 Method: F. Belhadj, "Terrain modeling: a constrained fractal model", AFRIGRAPH

@@ -59,6 +59,9 @@ NUMBERS = [
     ('I_BU', '-Ibu', 'Paper methods: bottom-up shape I_bu', _DOUBLE, 0.0, -100.0, 100.0, True),
     ('UPSAMPLE', '-upsample', 'Supersample the sketch by this factor (1 = no)', _INT, 1, 1, 1024, True),
     ('MEDIAN', '-median', 'Median filter size after the synthesis (0 = none, odd)', _INT, 0, 0, 101, True),
+    ('DIFFUSION', '-diffusion', 'Erosion: hillslope diffusion, a factor of the default (0 = none)', _DOUBLE, 1.0,
+     0.0, 100.0, True),
+    ('TALUS', '-talus', 'Erosion: talus angle in degrees (90 = none)', _DOUBLE, 90.0, 0.1, 90.0, True),
 ]
 # name, flag, label, advanced
 STRINGS = [
@@ -66,6 +69,10 @@ STRINGS = [
     ('RIVER_Z', '-river-z', 'Height of river line cells without one (Z1,Z2: source, mouth)', False),
     ('ZRANGE', '-zrange', 'Elevations of the grey levels or generator, "MIN MAX"', False),
     ('UNKNOWN', '-unknown', 'Sketch cells to synthesise (white, black, none or a value)', True),
+    ('EROSION', '-erode', 'Erosion: auto, steps on the finest grid, or 0 (empty: on for a skeleton or '
+     'from scratch, off for a sketch)', False),
+    ('EROSION_LAW', '-erosion', 'Erosion: stream-power law K,m,n (K a number or auto)', True),
+    ('UPLIFT', '-uplift', 'Erosion: uplift, terrain, uniform or a raster file', True),
 ]
 
 

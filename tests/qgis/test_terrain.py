@@ -123,6 +123,23 @@ def test_terrain_skeleton_generator(qp_env, terrain_cli, tmp_path):  # noqa: F81
     assert_same_raster(out, ref)
 
 
+def test_terrain_erosion_parameters_like_the_cli(qp_env, terrain_cli, tmp_path):  # noqa: F811
+    qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
+    text = qgis_process(qp_env, 'help', ALG).stdout
+    for name in ('EROSION', 'EROSION_LAW', 'UPLIFT', 'DIFFUSION', 'TALUS'):
+        assert name in text, name
+    out, ref, off = str(tmp_path / 'qgis.tif'), str(tmp_path / 'cli.tif'), str(tmp_path / 'off.tif')
+    run_terrain(qp_env, 'GENERATOR=1', 'WIDTH=129', 'HEIGHT=129', 'RS=0.1', 'SEED=2', 'EROSION=4',
+                'EROSION_LAW=auto,0.45,1', 'UPLIFT=uniform', 'DIFFUSION=2', 'TALUS=40', f'OUTPUT={out}')
+    run_cli(terrain_cli, ['-q', '-size', '129', '129', '-skeleton', '-rs', '0.1', '-seed', '2', '-diffusion',
+                          '2.0', '-talus', '40.0', '-erode', '4', '-erosion', 'auto,0.45,1', '-uplift', 'uniform',
+                          '-of', 'GTiff', ref])
+    assert_same_raster(out, ref)
+    run_terrain(qp_env, 'GENERATOR=1', 'WIDTH=129', 'HEIGHT=129', 'RS=0.1', 'SEED=2', 'EROSION=0',
+                f'OUTPUT={off}')
+    assert read_bands(off)[2][0][0].tobytes() != read_bands(out)[2][0][0].tobytes()
+
+
 def test_terrain_error_is_reported_and_nothing_left(qp_env, tmp_path):  # noqa: F811
     qgis_process(qp_env, 'plugins', 'enable', 'mcmd_provider')
     folder = tmp_path / 'out'

@@ -159,7 +159,10 @@ ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& pr
     const ErosionGrid& g = grids[l];
     z = l + 1 == levels ? g.initial : refine(z, grids[l + 1], g);
     const bool coarsest = l + 1 == levels, last = l == 0;
-    const int max_steps = last ? (p.steps == kErodeAuto ? kAutoSteps : p.steps) : coarsest ? kCoarsestSteps : kFinerSteps;
+    const int max_steps = last && p.steps != kErodeAuto ? p.steps
+                          : coarsest                      ? kCoarsestSteps
+                          : last                          ? kAutoSteps
+                                                          : kFinerSteps;
     // Progress: the coarser grids share the first half, the finest the rest.
     const double lo = last ? 0.5 : 0.5 * static_cast<double>(levels - 1 - l) / levels;
     const double hi = last ? 1.0 : 0.5 * static_cast<double>(levels - l) / levels;

@@ -1,6 +1,6 @@
 // make_skeleton(): ridge particles, their relief, river particles, then the
 // skeleton DEM: ridge cells at their altitude, river cells carved by their
-// mass and lowered so that none is higher than a cell upstream of it.
+// mass and lowered so that each is lower than every cell upstream of it.
 #include "mcmd/skeleton.hpp"
 
 #include <algorithm>
@@ -31,7 +31,11 @@ int automatic_couples(int w, int h) {
 }
 
 // River elevations: the relief minus the carving, then, from the sources
-// down (Kahn's order on the tree), never above any cell upstream.
+// down (Kahn's order on the tree), below every cell upstream by at least
+// kRiverDrop of the relief per cell: strictly descending, so that D8 water
+// follows the river (a flat step would let it leave).
+constexpr double kRiverDrop = 1e-5;
+
 void river_elevations(Skeleton& s, const terrain::RiverNetwork& net, double top) {
   const std::size_t n = net.downstream.size();
   std::vector<int> upstream(n, 0);
@@ -51,7 +55,7 @@ void river_elevations(Skeleton& s, const terrain::RiverNetwork& net, double top)
     ready.pop_back();
     const std::int64_t d = net.downstream[c];
     if (d < 0) continue;
-    z[d] = std::min(z[d], z[c]);
+    z[d] = std::min(z[d], z[c] - kRiverDrop * top);
     if (--upstream[d] == 0) ready.push_back(static_cast<std::size_t>(d));
   }
 }
