@@ -157,7 +157,7 @@ std::vector<double> local_residual(const Lattice& l, const std::vector<double>& 
 std::vector<double> relief_scale(const Canvas& c, const Lattice& l, const std::vector<double>& local, double global) {
   std::vector<double> node(local.size());
   for (std::size_t k = 0; k < local.size(); ++k)
-    node[k] = std::clamp(std::sqrt(local[k] / global), kMinScale, kMaxScale);
+    node[k] = std::clamp(std::sqrt(std::max(local[k], 0.0) / global), kMinScale, kMaxScale);  // box sums may round below 0
   const auto along = [&](int v, int v0, int n, int& k, double& t) {
     const double u = std::clamp(static_cast<double>(v - v0) / l.b, 0.0, static_cast<double>(n - 1));
     k = std::min(static_cast<int>(u), std::max(0, n - 2));

@@ -243,6 +243,22 @@ TEST(TerrainCli, UpsampleWithRsAutoMeasuresTheDem) {
   EXPECT_LT(std::fabs(std::log(made / real)), std::fabs(std::log(gamma1(smooth) / real)));
 }
 
+// A DEM with a lake (a flat of zero residual) beside its relief: -rs auto's
+// local roughness there is 0, summed to a hair below it, and once gave NaN.
+TEST(TerrainCli, UpsampleWithRsAutoOverALake) {
+  TempDir dir;
+  const Image truth = read_image(std::string(MCMD_TESTDATA_DIR) + "/sample_truth.tif");
+  Image coarse{257, 257, 1, GDT_Float32, {}};
+  for (int y = 0; y < 257; ++y)
+    for (int x = 0; x < 257; ++x)
+      coarse.values.push_back(x > 100 && y > 100 && x < 200 && y < 200 ? 6122.5 : 10 * truth.at(x, y));
+  write_image(dir.file("coarse.tif"), coarse, "GTiff");
+  expect_ok(run_terrain({"-q", "-upsample", "4", "-rs", "auto", dir.file("coarse.tif"), dir.file("auto.tif")}));
+  const Image t = read_image(dir.file("auto.tif"));
+  for (const double v : t.values) ASSERT_TRUE(std::isfinite(v));
+  EXPECT_EQ(t.at(600, 600), 6122.5f);
+}
+
 // -rs auto around a dense sketch: a 64-cell hole in the real-looking terrain
 // is made about as rough as the terrain it replaced; known cells exact.
 TEST(TerrainCli, RsAutoAroundADenseSketch) {
