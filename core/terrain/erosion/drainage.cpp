@@ -31,9 +31,11 @@ bool on_border(std::int32_t i, int w, int h) {
   return x == 0 || y == 0 || x == w - 1 || y == h - 1;
 }
 
-// Where each interior cell sends its water (d.lower, d.receiver) and, for
-// the order, each cell's count of the cells sending it water.
-void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector<std::int32_t>& higher) {
+// Where each interior cell sends its water (d.lower, d.receiver), row by
+// row on `threads`, then each cell's count of the cells sending it water
+// (for the order), gathered from its neighbours' masks.
+void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector<std::int32_t>& higher,
+               int threads) {
   const int w = d.w, h = d.h;
   const auto off = offsets(w);
   const std::size_t n = d.level.size();
@@ -41,25 +43,40 @@ void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector
   d.lower.assign(n, 0);
   higher.assign(n, 0);
   const bool divides = !divide.empty();
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (int y = 1; y < h - 1; ++y)
     for (int x = 1; x < w - 1; ++x) {
       const std::int32_t i = y * w + x;
       const double zi = d.level[i];
       unsigned mask = 0, open = 0;  // lower neighbours, and those that are not divides
-      for (int k = 0; k < 8; ++k)
-        if (zi > d.level[i + off[k]]) {
-          mask |= 1u << k;
-          if (!divides || !divide[i + off[k]]) open |= 1u << k;
-        }
-      if (open) mask = open;
       double steepest = 0.0;
-      for (int k = 0; k < 8; ++k)
-        if (mask >> k & 1u) {
-          ++higher[i + off[k]];
-          const double s = (zi - d.level[i + off[k]]) * kInverseLength[k];
-          if (s > steepest) steepest = s, d.receiver[i] = i + off[k];
+      std::int32_t to = -1;
+      for (int k = 0; k < 8; ++k) {
+        const double s = (zi - d.level[i + off[k]]) * kInverseLength[k];
+        if (s > 0) {
+          mask |= 1u << k;
+          if (!divides || !divide[i + off[k]]) {
+            if (!open || s > steepest) steepest = s, to = i + off[k];
+            open |= 1u << k;
+          } else if (!open && s > steepest) {
+            steepest = s, to = i + off[k];
+          }
         }
-      d.lower[i] = static_cast<std::uint8_t>(mask);
+      }
+      d.lower[i] = static_cast<std::uint8_t>(open ? open : mask);
+      d.receiver[i] = to;
+    }
+  // Neighbour k of cell i is i + off[k]; it sends to i when its bit (k + 4) % 8 is set.
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::int32_t i = y * w + x;
+      int count = 0;
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + kDx[k], ny = y + kDy[k];
+        if (nx > 0 && ny > 0 && nx < w - 1 && ny < h - 1) count += d.lower[i + off[k]] >> ((k + 4) & 7) & 1u;
+      }
+      higher[i] = count;
     }
 }
 
@@ -67,13 +84,17 @@ void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector
 // neighbour has passed its water on: Kahn's, depth first so that the
 // cells taken one after the other are mostly neighbours), spreading the
 // area on the way: each interior cell passes its area to its lower
-// neighbours in proportion to slope × contour length (Quinn et al. 1991).
+// neighbours in proportion to slope² × contour length (Quinn et al. 1991's
+// weights, Freeman's sharper exponent: flow spreads on hillslopes and
+// gathers in the valleys).
 // d.order is the reverse: outlets first. `higher` ends at -1 everywhere.
-void spread_area(Drainage& d, std::vector<std::int32_t>& higher, std::vector<std::int32_t>& stack) {
-  const int w = d.w, h = d.h;
+void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std::int32_t>& higher,
+                 std::vector<std::int32_t>& stack) {
+  const int w = d.w;
   const auto off = offsets(w);
   const std::size_t n = d.level.size();
   d.area.assign(n, 1.0);
+  for (std::size_t i = 0; i < source.size(); ++i) d.area[i] += source[i];
   d.order.clear();
   d.order.reserve(n);
   stack.clear();
@@ -86,12 +107,13 @@ void spread_area(Drainage& d, std::vector<std::int32_t>& higher, std::vector<std
       stack.pop_back();
       higher[i] = -1;
       d.order.push_back(i);
-      if (on_border(i, w, h)) continue;
-      const double zi = d.level[i];
       const unsigned mask = d.lower[i];
+      if (!mask) continue;  // the border (every interior cell has a lower neighbour)
+      const double zi = d.level[i];
       double total = 0.0;
       for (int j = 0; j < 8; ++j) {
-        share[j] = mask >> j & 1u ? (zi - d.level[i + off[j]]) * kInverseLength[j] * kContour[j] : 0.0;
+        const double slope = (zi - d.level[i + off[j]]) * kInverseLength[j];
+        share[j] = mask >> j & 1u ? slope * slope * kContour[j] : 0.0;
         total += share[j];
       }
       const double a = d.area[i] / total;  // total > 0: an interior cell has a lower neighbour
@@ -106,15 +128,15 @@ void spread_area(Drainage& d, std::vector<std::int32_t>& higher, std::vector<std
   std::reverse(d.order.begin(), d.order.end());
 }
 
-void route(Drainage& d, const std::vector<std::uint8_t>& divide, DrainageScratch& s) {
-  receivers(d, divide, s.count);
-  spread_area(d, s.count, s.stack);
+void route(Drainage& d, const WaterGuides& guides, DrainageScratch& s) {
+  receivers(d, guides.divide, s.count, s.threads);
+  spread_area(d, guides.source, s.count, s.stack);
 }
 
 }  // namespace
 
-void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const std::vector<std::uint8_t>& divide,
-           int w, int h, Drainage& d, DrainageScratch& s) {
+void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides, int w, int h,
+           Drainage& d, DrainageScratch& s) {
   const std::size_t n = z.size();
   d.w = w, d.h = h;
   d.level.resize(n);
@@ -141,11 +163,11 @@ void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const
   }
   for (std::size_t i = 0; i < n; ++i)
     if (!fixed[i]) z[i] = d.level[i];
-  route(d, divide, s);
+  route(d, guides, s);
 }
 
-void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixed,
-                   const std::vector<std::uint8_t>& divide, Drainage& d, DrainageScratch& s) {
+void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides,
+                   Drainage& d, DrainageScratch& s) {
   for (const std::int32_t i : d.order) {
     const std::int32_t r = d.receiver[i];
     double v = z[i];
@@ -153,7 +175,7 @@ void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixe
     d.level[i] = v;
     if (!fixed[i]) z[i] = v;
   }
-  route(d, divide, s);
+  route(d, guides, s);
 }
 
 }  // namespace mcmd::terrain

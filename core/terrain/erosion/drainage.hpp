@@ -5,9 +5,11 @@
 // (D8, the receiver the stream power erodes towards) and spreads its
 // drainage area over all of its lower neighbours (multiple flow
 // directions: hillslopes do not streak along the grid). The raster's
-// border drains out. Divide cells (a drawn ridge) take no water while a
-// cell has another lower neighbour: the land drains away from them on
-// both sides, so that they stay divides.
+// border drains out. The drawn lines guide the water (WaterGuides): a
+// ridge's cells take no water while a cell has another lower neighbour, so
+// that the land drains away from them on both sides and they stay divides;
+// a river's cells bring water of their own, so that they carve the valley
+// they run in.
 #pragma once
 
 #include <cstdint>
@@ -16,6 +18,12 @@
 #include "morphology/radix_heap.hpp"
 
 namespace mcmd::terrain {
+
+// What the drawn lines ask of the water (an empty vector: nothing).
+struct WaterGuides {
+  std::vector<std::uint8_t> divide;  // w·h: cells no water enters while it can go elsewhere (ridges)
+  std::vector<double> source;        // w·h: drainage area a cell brings besides its own, in its grid's cells (rivers)
+};
 
 struct Drainage {
   int w = 0, h = 0;
@@ -31,22 +39,22 @@ struct DrainageScratch {
   morph::RadixHeap heap;
   std::vector<std::uint8_t> mark;
   std::vector<std::int32_t> count, stack;
+  int threads = 1;  // for the row passes; the result does not depend on it
 };
 
 // Fill every depression of z (Priority-Flood with ε from the border: each
 // cell ends strictly above the cell that reached it) into d.level, raise the
 // free cells of z to it (a fixed cell keeps its height, water passes over
 // it), then route(). Pre: z finite, w, h >= 3.
-// `divide`: w·h flags of the divide cells (empty: none).
-void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const std::vector<std::uint8_t>& divide,
-           int w, int h, Drainage& d, DrainageScratch& scratch);
+void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides, int w, int h,
+           Drainage& d, DrainageScratch& scratch);
 
 // After a step moved z a little: raise the cells that sank to or below
 // their last receiver (which was lower) just above it, outlets first, as
 // flood() would (cheaply: along last step's network), then route().
 // Pre: d holds last step's drainage of these w×h cells.
-void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixed,
-                   const std::vector<std::uint8_t>& divide, Drainage& d, DrainageScratch& scratch);
+void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides,
+                   Drainage& d, DrainageScratch& scratch);
 
 // The distance from cell i to its neighbour j in cells (1 or √2).
 inline double step_length(std::int32_t i, std::int32_t j, int w) {

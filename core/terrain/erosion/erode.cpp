@@ -19,21 +19,26 @@ namespace {
 using terrain::ErosionGrid;
 
 // The length of the hillslopes between the smallest valleys, in elevation
-// units (metres on a DEM in metres): diffusion D = K·ℓ² balances the
-// stream power there.
-constexpr double kHillslopeLength = 200.0;
+// units (metres on a DEM in metres), at least two cells of the grid
+// (evolve.hpp): diffusion D = K·ℓ² balances the stream power there.
+constexpr double kHillslopeLength = 50.0;
 // Steps at most: on the coarsest grid (until its network converges), on
 // the grids between, and on the finest with EROSION=auto.
 constexpr int kCoarsestSteps = 300, kFinerSteps = 10, kAutoSteps = 40;
+// The drainage area each river cell brings, in finest cells: a river of a
+// few hundred cells drains like a trunk valley of its raster.
+constexpr double kRiverSource = 100.0;
 
 [[noreturn]] void bad(const std::string& why) { throw std::invalid_argument(why); }
 
 bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
 
-// The finest grid: heights in cells; the constraints fixed but the ridge
-// cells, the border fixed as the outlets. Ridge cells erode with the land
-// as divides (no water enters them) and are warped back at the end: held
-// at their heights, the land beside them would rise above them.
+// The finest grid: heights in cells; the border fixed as the outlets, the
+// sketch and point cells held. The drawn lines erode with the land, and are
+// warped back at the end: held at their heights, the land beside a ridge
+// would rise above it and the land beside a river sink below it. Instead
+// they guide the water: a ridge is a divide (no water enters it), a river
+// brings water of its own and carves its valley.
 ErosionGrid finest(const Canvas& c, const ErosionParams& p) {
   ErosionGrid g;
   g.w = c.w, g.h = c.h;
@@ -43,11 +48,16 @@ ErosionGrid finest(const Canvas& c, const ErosionParams& p) {
     for (int x = 0; x < c.w; ++x) {
       const std::size_t i = c.index(x, y);
       g.initial[i] = c.z[i] / p.cell_size;
-      const bool ridge = c.state[i] == CellState::ridge;
-      g.fixed[i] = is_constraint(c.state[i]) && !ridge ? 2 : on_border(x, y, c.w, c.h) ? 1 : 0;
-      if (ridge) {
-        if (g.divide.empty()) g.divide.assign(c.cells(), 0);
-        g.divide[i] = 1;
+      const CellState s = c.state[i];
+      const bool line = s == CellState::ridge || s == CellState::river;
+      g.fixed[i] = is_constraint(s) && !line ? 2 : on_border(x, y, c.w, c.h) ? 1 : 0;
+      if (s == CellState::ridge) {
+        if (g.guides.divide.empty()) g.guides.divide.assign(c.cells(), 0);
+        g.guides.divide[i] = 1;
+      }
+      if (s == CellState::river) {
+        if (g.guides.source.empty()) g.guides.source.assign(c.cells(), 0.0);
+        g.guides.source[i] = kRiverSource;
       }
     }
   return g;
@@ -59,13 +69,13 @@ std::vector<double> flooded(const std::vector<double>& z, int w, int h) {
 }
 
 // The uplift pattern, scaled to a mean of 1 over the free cells.
-std::vector<double> uplift_of(const ErosionGrid& g, const ErosionParams& p) {
+// `filled`: the uneroded terrain flooded.
+std::vector<double> uplift_of(const ErosionGrid& g, const std::vector<double>& filled, const ErosionParams& p) {
   std::vector<double> u(g.initial.size(), 1.0);
   if (p.uplift == UpliftPattern::map) u = p.uplift_map;
   if (p.uplift == UpliftPattern::terrain) {
     // The height of the filled terrain above its lowest cell, with a floor
     // so that no free cell is left without uplift (it would stay flat).
-    const std::vector<double> filled = flooded(g.initial, g.w, g.h);
     const auto [lo, hi] = std::minmax_element(filled.begin(), filled.end());
     const double range = *hi > *lo ? *hi - *lo : 1.0;
     for (std::size_t i = 0; i < u.size(); ++i) u[i] = 0.1 + (filled[i] - *lo) / range;
@@ -89,14 +99,15 @@ std::vector<double> refine(const std::vector<double>& z, const ErosionGrid& coar
   return up;
 }
 
-// The eroded heights (finest cells) into the canvas. The ridge cells eroded
+// The eroded heights (finest cells) into the canvas. The line cells eroded
 // with the land: a smooth warp, the thin plate through their residuals (0
 // at the other constraints), brings them back exactly.
 void write_back(Canvas& c, const std::vector<double>& z, const ErosionGrid& g, double cell_size, int threads) {
   std::vector<double> warp(c.cells(), 0.0);
   bool ridges = false;
   for (std::size_t i = 0; i < c.cells(); ++i)
-    if (c.state[i] == CellState::ridge && !g.fixed[i]) warp[i] = c.z[i] - z[i] * cell_size, ridges = true;
+    if ((c.state[i] == CellState::ridge || c.state[i] == CellState::river) && !g.fixed[i])
+      warp[i] = c.z[i] - z[i] * cell_size, ridges = true;
   if (ridges) {
     ThinPlateSchedule schedule;
     schedule.vcycle.threads = threads;
@@ -138,7 +149,8 @@ ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& pr
     return out;
   }
   std::vector<ErosionGrid> grids{finest(canvas, p)};
-  grids[0].uplift = uplift_of(grids[0], p);
+  const std::vector<double> filled = flooded(grids[0].initial, grids[0].w, grids[0].h);
+  grids[0].uplift = uplift_of(grids[0], filled, p);
   while (std::max(grids.back().w, grids.back().h) > terrain::kCoarsestSide) grids.push_back(terrain::coarser(grids.back()));
   out.grids = static_cast<int>(grids.size());
 
@@ -147,7 +159,7 @@ ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& pr
   e.m = p.m, e.n = p.n;
   // With K automatic the relief of the uneroded terrain is held; a given K
   // lets the relief follow from it and the uplift.
-  if (p.K == 0.0) e.relief = terrain::relief(flooded(grids[0].initial, grids[0].w, grids[0].h), grids[0].fixed);
+  if (p.K == 0.0) e.relief = terrain::relief(filled, grids[0].fixed);
   e.hillslope = kHillslopeLength / p.cell_size;
   e.diffusion = p.diffusion;
   e.talus = p.talus >= 90 ? 0.0 : std::tan(p.talus * M_PI / 180.0);

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "terrain/erosion/drainage.hpp"
 #include "terrain/erosion/hillslope.hpp"
@@ -34,12 +32,19 @@ double moved_share(const std::vector<std::int32_t>& before, const Drainage& d, d
 }  // namespace
 
 double relief(const std::vector<double>& z, const std::vector<std::uint8_t>& fixed) {
-  double lo = HUGE_VAL, sum = 0.0;
-  std::size_t n = 0;
+  // Its 99th percentile, on a sample of about 2^16 free cells at a fixed
+  // stride: the mountains keep their height, the valleys are cut into them.
+  const std::size_t stride = std::max<std::size_t>(1, z.size() >> 16);
+  double lo = HUGE_VAL;
+  std::vector<double> v;
+  v.reserve(z.size() / stride + 1);
   for (std::size_t i = 0; i < z.size(); ++i)
     if (fixed[i]) lo = std::min(lo, z[i]);
-    else sum += z[i], ++n;
-  return n && lo < HUGE_VAL ? sum / static_cast<double>(n) - lo : 0.0;
+    else if (i % stride == 0) v.push_back(z[i]);
+  if (v.empty() || lo == HUGE_VAL) return 0.0;
+  const auto k = v.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(v.size() - 1));
+  std::nth_element(v.begin(), k, v.end());
+  return *k - lo;
 }
 
 GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int max_steps, bool until_converged,
@@ -48,12 +53,12 @@ GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int m
   StreamPower sp{e.K, e.m, e.n, g.spacing};
   Drainage d;
   DrainageScratch scratch;
+  scratch.threads = e.threads;
   std::vector<std::int32_t> previous;
-  const bool trace = std::getenv("MCMD_EROSION_TRACE") != nullptr;
   for (int s = 0; s < max_steps; ++s) {
     report(progress, static_cast<double>(s) / max_steps);
-    if (s == 0) flood(z, g.fixed, g.divide, g.w, g.h, d, scratch);
-    else keep_draining(z, g.fixed, g.divide, d, scratch);
+    if (s == 0) flood(z, g.fixed, g.guides, g.w, g.h, d, scratch);
+    else keep_draining(z, g.fixed, g.guides, d, scratch);
     if (sp.K == 0.0) e.K = sp.K = steady_state_erodibility(g.initial, g.uplift, g.fixed, d, sp);
     if (!(sp.K > 0.0)) break;  // no relief to keep: nothing erodes
     // A step of one cell² of diffusion on this grid: D·dt = spacing².
@@ -70,9 +75,6 @@ GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int m
       ratio = relief(z, g.fixed) / e.relief;
       if (ratio > 0) e.rate /= std::pow(ratio, 0.5 * e.n);
     }
-    if (trace)
-      std::fprintf(stderr, "erosion %dx%d step %d K %.4g rate %.4g moved %.5f relief %.4f\n", g.w, g.h, s, sp.K, e.rate,
-                   run.moved, ratio);
     previous = d.receiver;
     if (until_converged && run.moved < kMovedChannels && std::fabs(ratio - 1.0) < kReliefTolerance) {
       run.converged = true;

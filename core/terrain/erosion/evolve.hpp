@@ -28,7 +28,8 @@ struct GridRun {
   double moved = 1.0;  // share of the channels whose receiver changed in the last step
 };
 
-// The mean height of the free cells above the lowest fixed cell.
+// How high the free cells stand above the lowest fixed cell: their 99th
+// percentile (on a sample).
 double relief(const std::vector<double>& z, const std::vector<std::uint8_t>& fixed);
 
 // Steps on grid g from z (heights in finest cells): at most max_steps, fewer

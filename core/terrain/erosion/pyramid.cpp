@@ -62,13 +62,20 @@ ErosionGrid coarser(const ErosionGrid& g) {
       double mean;
       if (fixed_below(g, X, Y, mean)) c.fixed[i] = 2, c.initial[i] = mean;
       if (on_border(X, Y, c.w, c.h)) c.fixed[i] = std::max<std::uint8_t>(c.fixed[i], 1);
-      if (!g.divide.empty()) {
-        if (c.divide.empty()) c.divide.assign(n, 0);
+      if (!g.guides.divide.empty()) {
+        if (c.guides.divide.empty()) c.guides.divide.assign(n, 0);
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             const int x = 2 * X + dx, y = 2 * Y + dy;
-            if (x >= 0 && y >= 0 && x < g.w && y < g.h && g.divide[static_cast<std::size_t>(y) * g.w + x]) c.divide[i] = 1;
+            if (x >= 0 && y >= 0 && x < g.w && y < g.h && g.guides.divide[static_cast<std::size_t>(y) * g.w + x])
+              c.guides.divide[i] = 1;
           }
+      }
+      // Full weighting gives a line of sources s a coarse cell s/2: the two
+      // fine cells under it (2s fine cells of area) in coarse cells.
+      if (!g.guides.source.empty()) {
+        if (c.guides.source.empty()) c.guides.source.assign(n, 0.0);
+        c.guides.source[i] = restricted(g.guides.source, g.w, g.h, X, Y);
       }
     }
   return c;

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "terrain/erosion/drainage.hpp"
+
 namespace mcmd::terrain {
 
 constexpr int kCoarsestSide = 320;
@@ -18,13 +20,13 @@ struct ErosionGrid {
   std::vector<double> initial;      // the uneroded terrain, in finest-grid cells
   std::vector<double> uplift;       // relative uplift rate
   std::vector<std::uint8_t> fixed;  // 2: a constraint, 1: the border, 0: free
-  std::vector<std::uint8_t> divide;  // free cells the water does not enter (drawn ridges); empty: none
+  WaterGuides guides;               // the drawn ridges and rivers
 };
 
 // The next coarser grid of g: fixed where a fixed cell of g (other than its
 // border) lies in the 3×3 below, at their mean height, so that lines of
 // constraints stay connected; its border fixed too; a divide where one is
-// in the 3×3 below.
+// in the 3×3 below, the sources below gathered.
 ErosionGrid coarser(const ErosionGrid& g);
 
 // A cw×ch field on the w×h grid below it.
