@@ -14,7 +14,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
+
+#include "common/zero_runs.hpp"
 
 namespace mcmd::detail {
 
@@ -32,17 +35,10 @@ struct Box {  // inclusive bounds
 
 // Calls f(x0, x1) for each run [x0, x1) of void cells (valid[x] == 0) among
 // the w cells of a row, left to right.
+// (memchr skips the known cells a vector at a time: rows are mostly known.)
 template <class F>
 void for_each_void_run(const std::uint8_t* valid, int w, F&& f) {
-  for (int x = 0; x < w;) {
-    if (valid[x]) {
-      ++x;
-      continue;
-    }
-    const int x0 = x;
-    while (x < w && !valid[x]) ++x;
-    f(x0, x);
-  }
+  for_each_zero_run(valid, w, std::forward<F>(f));
 }
 
 // One byte per cell of the w×h rectangle whose first cell is (x0, y0): 1

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "common/zero_runs.hpp"
 #include "mcmd/fill_raster.hpp"
 #include "raster/frame.hpp"
 #include "raster/void_selection.hpp"
@@ -14,6 +15,7 @@
 #include "raster/tiles/lone_void.hpp"
 #include "raster/tiles/tile_jobs.hpp"
 #include "raster/tiles/tile_plan.hpp"
+#include "raster/tiles/tile_scan.hpp"
 #include "raster/void_components.hpp"
 
 namespace mcmd {
@@ -44,41 +46,59 @@ TileLayout layout_of(int width, int height, const TilingParams& tiling, Method m
 
 bool inside(int x, int y, const CellRect& r) { return x >= r.x0 && x < r.x0 + r.w && y >= r.y0 && y < r.y0 + r.h; }
 
-// The cells of `r` in one read.
+// Cells of a rectangle, read at once.
 struct Cells {
   CellRect rect;
   std::vector<double> z;
   std::vector<std::uint8_t> valid;
 };
-Cells read_cells(const RasterAccess& raster, CellRect r) {
-  Cells c{r, std::vector<double>(static_cast<std::size_t>(r.w) * r.h), {}};
-  c.valid.resize(c.z.size());
-  if (!c.z.empty()) raster.read(r.x0, r.y0, r.w, r.h, c.z.data(), c.valid.data());
-  return c;
-}
 
-CellRect grown(const CellRect& own, int by, int width, int height) {
-  const int x0 = std::max(0, own.x0 - by), y0 = std::max(0, own.y0 - by);
-  const int x1 = std::min(width, own.x0 + own.w + by), y1 = std::min(height, own.y0 + own.h + by);
-  return CellRect{x0, y0, x1 - x0, y1 - y0};
-}
-
-void count_cells(const Cells& c, const CellRect& own, ChunkSummary& s) {
-  for (int y = own.y0; y < own.y0 + own.h; ++y) {
+// The known cells and void runs of rows [y0, y1) of `own`, from `c` (which holds them).
+void count_rows(const Cells& c, const CellRect& own, int y0, int y1, ChunkSummary& s) {
+  for (int y = y0; y < y1; ++y) {
     const std::size_t at = static_cast<std::size_t>(y - c.rect.y0) * c.rect.w + (own.x0 - c.rect.x0);
-    const double* z = c.z.data() + at;
     const std::uint8_t* valid = c.valid.data() + at;
-    for (int x = 0; x < own.w; ++x) {
-      if (!valid[x]) continue;
-      ++s.known;
-      s.lo = std::min(s.lo, z[x]);
-      s.hi = std::max(s.hi, z[x]);
-    }
-    detail::for_each_void_run(valid, own.w, [&](int x0, int x1) {
+    const std::size_t known = detail::add_known_range(c.z.data() + at, valid, own.w, s.lo, s.hi);
+    s.known += known;
+    if (known == static_cast<std::size_t>(own.w)) continue;
+    detail::for_each_zero_run(valid, own.w, [&](int x0, int x1) {
       s.voids += static_cast<std::size_t>(x1 - x0);
       s.void_runs.insert(s.void_runs.end(), {y, own.x0 + x0, own.x0 + x1});
     });
   }
+}
+
+// A summary reads its rows a strip at a time (a few MB, reused, rather than
+// the chunk and its margin as doubles at once). A strip holds whole lattice
+// rows of the guide's blocks, so each block's cells are summed in one pass
+// in raster order, as the CLI's scan sums them.
+struct SummaryStrip {
+  int y0 = 0, y1 = 0;
+  Range js{0, 0};  // the lattice rows whose blocks it holds
+};
+constexpr int kStripRows = 128;
+
+std::vector<SummaryStrip> summary_strips(const CellRect& own, int height, int stride, Range js) {
+  std::vector<SummaryStrip> strips;
+  const auto plain = [&strips](int from, int to) {
+    for (int y = from; y < to; y += kStripRows) strips.push_back(SummaryStrip{y, std::min(to, y + kStripRows), {0, 0}});
+  };
+  const int top = own.y0, bottom = own.y0 + own.h;
+  if (js.size() <= 0) {
+    plain(top, bottom);
+    return strips;
+  }
+  const int half = stride / 2;
+  const auto edge = [&](int j) { return std::clamp(j * stride - half, 0, height); };
+  const int ya = edge(js.begin), yb = edge(js.end);
+  plain(std::min(top, ya), ya);
+  const int group = std::max(1, kStripRows / stride);
+  for (int j = js.begin; j < js.end; j += group) {
+    const int je = std::min(js.end, j + group);
+    strips.push_back(SummaryStrip{edge(j), edge(je), Range{j, je}});
+  }
+  plain(yb, std::max(bottom, yb));
+  return strips;
 }
 
 void put_moments(CoarseGuide& guide, const ChunkSummary& s) {
@@ -163,20 +183,38 @@ ChunkSummary summarize_chunk(const RasterAccess& raster, const TilingParams& til
   if (own.w < 1 || own.h < 1 || own.x0 < 0 || own.y0 < 0 || own.x0 + own.w > W || own.y0 + own.h > H)
     throw std::invalid_argument("the chunk does not lie inside the raster");
   const ChunkGrid grid = chunk_grid(W, H, tiling, method);
+  const int stride = grid.guide_stride;
   ChunkSummary s;
   s.own = own;
-  const int stride = grid.guide_stride;
-  const Cells cells = read_cells(raster, grown(own, stride / 2, W, H));
-  count_cells(cells, own, s);
-  if (grid.whole) return s;
-  const Range is = CoarseGuide::lattice_points(W, stride, own.x0, own.x0 + own.w);
-  const Range js = CoarseGuide::lattice_points(H, stride, own.y0, own.y0 + own.h);
-  const CoarseGuide::CellBlock block{cells.rect.x0, cells.rect.y0, cells.rect.w, cells.rect.h, cells.z.data(),
-                                     cells.valid.data()};
-  const std::vector<CoarseGuide::Moments> part = CoarseGuide::part_moments(W, H, stride, is, js, block);
-  s.i0 = is.begin, s.i1 = is.end, s.j0 = js.begin, s.j1 = js.end;
-  s.moments.resize(part.size() * 9);
-  for (std::size_t k = 0; k < part.size(); ++k) to_doubles(part[k], s.moments.data() + 9 * k);
+  Range is{0, 0}, js{0, 0};
+  int x0 = own.x0, x1 = own.x0 + own.w;  // the columns read: own's and its lattice blocks'
+  if (!grid.whole) {
+    is = CoarseGuide::lattice_points(W, stride, own.x0, own.x0 + own.w);
+    js = CoarseGuide::lattice_points(H, stride, own.y0, own.y0 + own.h);
+    if (is.size() > 0 && js.size() > 0) {
+      x0 = std::min(x0, std::max(0, is.begin * stride - stride / 2));
+      x1 = std::max(x1, std::min(W, is.end * stride - stride / 2));
+    }
+    s.i0 = is.begin, s.i1 = is.end, s.j0 = js.begin, s.j1 = js.end;
+    s.moments.reserve(static_cast<std::size_t>(std::max(0, is.size())) * std::max(0, js.size()) * 9);
+  }
+  Cells cells;
+  for (const SummaryStrip& strip : summary_strips(own, H, stride, is.size() > 0 ? js : Range{0, 0})) {
+    cells.rect = CellRect{x0, strip.y0, x1 - x0, strip.y1 - strip.y0};
+    const std::size_t n = static_cast<std::size_t>(cells.rect.w) * cells.rect.h;
+    cells.z.resize(n);
+    cells.valid.resize(n);
+    if (n > 0)  // a lattice row past the raster's last cell has an empty block (zero moments)
+      raster.read(cells.rect.x0, cells.rect.y0, cells.rect.w, cells.rect.h, cells.z.data(), cells.valid.data());
+    count_rows(cells, own, std::max(strip.y0, own.y0), std::min(strip.y1, own.y0 + own.h), s);
+    if (strip.js.size() <= 0) continue;
+    const CoarseGuide::CellBlock block{cells.rect.x0, cells.rect.y0, cells.rect.w, cells.rect.h, cells.z.data(),
+                                       cells.valid.data()};
+    for (const CoarseGuide::Moments& m : CoarseGuide::part_moments(W, H, stride, is, strip.js, block)) {
+      s.moments.resize(s.moments.size() + 9);
+      to_doubles(m, s.moments.data() + s.moments.size() - 9);
+    }
+  }
   return s;
 }
 

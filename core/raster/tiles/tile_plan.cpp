@@ -120,16 +120,11 @@ RasterAccess void_pattern(int width, int height, const RunsByRow& voids) {
   RasterAccess r;
   r.width = width;
   r.height = height;
-  r.read = [&voids, width](int x0, int y0, int w, int h, double* z, std::uint8_t* valid) {
-    std::vector<std::uint8_t> row(static_cast<std::size_t>(width));
-    for (int y = 0; y < h; ++y) {
-      std::fill(row.begin(), row.end(), 0);
-      voids.mark_row(y0 + y, row.data());
-      for (int x = 0; x < w; ++x) {
-        z[static_cast<std::size_t>(y) * w + x] = 0.0;
-        valid[static_cast<std::size_t>(y) * w + x] = row[x0 + x] ? 0 : 1;
-      }
-    }
+  r.read = [&voids](int x0, int y0, int w, int h, double* z, std::uint8_t* valid) {
+    const std::size_t n = static_cast<std::size_t>(w) * h;
+    std::fill_n(z, n, 0.0);
+    std::fill_n(valid, n, std::uint8_t{1});
+    voids.clear(x0, y0, w, h, valid);
   };
   r.write = [](int, int, int, int, const double*, const std::uint8_t*) {};
   return r;
@@ -155,7 +150,7 @@ bool plan_from_parts(const PlanParts& parts, const FillParams& params, const Til
   std::optional<ComponentFinder> finder = component_finder(plan, params, tiling);
   const RasterAccess pattern = void_pattern(parts.width, parts.height, parts.voids);
   left = selects_voids(tiling) ? find_left_voids(pattern, tiling) : LeftVoids{};
-  ScanResult scan = scan_raster(pattern, plan.layout, nullptr, {}, finder ? &*finder : nullptr, &left);
+  ScanResult scan = scan_void_runs(parts.voids, plan.layout, finder ? &*finder : nullptr, &left);
   scan.lo = parts.lo;
   scan.hi = parts.hi;
   // A chunk's halo holds a component's grid, not its void field: no channels.
