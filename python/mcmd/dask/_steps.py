@@ -44,21 +44,47 @@ class Window(NamedTuple):
     h: int
 
 
+_SOURCES: "OrderedDict[tuple, tuple]" = OrderedDict()  # (path, token): (dataset, its lock), the last few
+_SOURCES_KEPT = 4
+_SOURCES_LOCK = threading.Lock()
+
+
+def _source(window: Window, spec: Spec) -> tuple:
+    """This process's open dataset of the window's file, and the lock its
+    reads take. One dataset per process: its blocks, decoded once, serve
+    the margins the chunks around also read (a dataset per read decoded
+    each margin's blocks again: half as much again on the mosaic)."""
+    from osgeo import gdal
+    key = (window.path, spec.token)
+    with _SOURCES_LOCK:
+        source = _SOURCES.get(key)
+        if source is None:
+            source = (gdal.OpenEx(window.path, gdal.OF_RASTER | gdal.OF_READONLY | gdal.OF_VERBOSE_ERROR),
+                      threading.Lock())
+            _SOURCES[key] = source
+            while len(_SOURCES) > _SOURCES_KEPT:
+                _SOURCES.popitem(last=False)
+        else:
+            _SOURCES.move_to_end(key)
+        return source
+
+
 def read(window: Window, spec: Spec) -> tuple:
     """The window's cells in the raster's dtype and the band's own validity
     mask (its mask or alpha band, as the CLI reads them; None when the nodata
     value alone marks the voids)."""
     from osgeo import gdal
-    ds = gdal.OpenEx(window.path, gdal.OF_RASTER | gdal.OF_READONLY | gdal.OF_VERBOSE_ERROR)
-    b = ds.GetRasterBand(window.band)
-    cells = b.ReadAsArray(window.x0, window.y0, window.w, window.h)
-    if cells is None:
-        raise Error(f"cannot read '{window.path}': {gdal.GetLastErrorMsg()}")
+    ds, lock = _source(window, spec)
+    with lock:  # a GDAL dataset serves one thread at a time
+        b = ds.GetRasterBand(window.band)
+        cells = b.ReadAsArray(window.x0, window.y0, window.w, window.h)
+        if cells is None:
+            raise Error(f"cannot read '{window.path}': {gdal.GetLastErrorMsg()}")
+        flags = b.GetMaskFlags()
+        mask = None
+        if not flags & (gdal.GMF_ALL_VALID | gdal.GMF_NODATA):
+            mask = b.GetMaskBand().ReadAsArray(window.x0, window.y0, window.w, window.h)
     cells = cells.view(np.dtype(spec.dtype)) if cells.dtype.itemsize == np.dtype(spec.dtype).itemsize else cells
-    flags = b.GetMaskFlags()
-    mask = None
-    if not flags & (gdal.GMF_ALL_VALID | gdal.GMF_NODATA):
-        mask = b.GetMaskBand().ReadAsArray(window.x0, window.y0, window.w, window.h)
     return cells, mask
 
 
@@ -89,6 +115,15 @@ def _cells(block: np.ndarray, spec: Spec) -> np.ndarray:
     return _arrays.native_copy(np.asarray(block, dtype=np.dtype(spec.dtype)))
 
 
+def _cells_read(block: Any, spec: Spec) -> np.ndarray:
+    """The block itself when the fill can read it in place (steps that only
+    read it), else a copy as _cells makes."""
+    if (type(block) is np.ndarray and block.flags.c_contiguous and block.flags.writeable
+            and block.dtype == _arrays.work_dtype(np.dtype(spec.dtype)) and block.dtype.isnative):
+        return block
+    return _cells(block, spec)
+
+
 def _valid(mask: Optional[np.ndarray], block: Any = None) -> Optional[np.ndarray]:
     """The validity of a block's cells: `mask` and a masked block's own mask."""
     valid = None if mask is None else np.asarray(mask) != 0
@@ -105,7 +140,7 @@ def _result(out: np.ndarray, spec: Spec) -> np.ndarray:
 def summarize(block, mask, spec: Spec, origin, own) -> dict:
     """Step 1: the chunk's void runs, known range and guide moments."""
     block, mask = _block(block, mask, spec)
-    return _mcmd.summarize_chunk(_cells(block, spec), _valid(mask, block), spec.gdal_type, spec.nodata, spec.options,
+    return _mcmd.summarize_chunk(_cells_read(block, spec), _valid(mask, block), spec.gdal_type, spec.nodata, spec.options,
                                  tuple(origin), (spec.width, spec.height), tuple(own))
 
 
@@ -133,7 +168,7 @@ def plan(spec: Spec, summaries: list):
 def solve(summaries: list, block, mask, spec: Spec, origin, own) -> tuple:
     """Step 3: the windows and small voids the chunk owns, solved."""
     block, mask = _block(block, mask, spec)
-    return _mcmd.solve_chunk(plan(spec, summaries), _cells(block, spec), _valid(mask, block), spec.gdal_type, spec.nodata,
+    return _mcmd.solve_chunk(plan(spec, summaries), _cells_read(block, spec), _valid(mask, block), spec.gdal_type, spec.nodata,
                              tuple(origin), tuple(own))
 
 
