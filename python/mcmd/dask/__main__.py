@@ -191,14 +191,14 @@ def on_threads(a, src, graphs, tmp, zarr) -> None:
 def on_cluster(a, src, graphs, tmp, zarr) -> None:
     """A dask.distributed cluster: chunks written as they arrive (the client
     holds one at a time)."""
-    from distributed import Client, LocalCluster, as_completed, progress
+    from distributed import Client, as_completed, progress
     from . import _file
     cluster = None
     if a.scheduler:
         client = Client(a.scheduler)
     else:
-        cluster = LocalCluster(n_workers=a.workers, threads_per_worker=a.threads_per_worker, processes=True,
-                               dashboard_address=None)
+        from ._cluster import local_cluster
+        cluster = local_cluster(a.workers, a.threads_per_worker)
         client = Client(cluster)
     try:
         writer = zarr_writer(src, graphs, tmp) if zarr else geotiff_writer(a, src, graphs, tmp)
