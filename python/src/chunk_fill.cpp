@@ -172,7 +172,13 @@ class Reader {
 };
 
 py::array_t<std::uint8_t> solution_bytes(const ChunkSolution& s) {
+  std::size_t size = 2 * sizeof(std::uint64_t);
+  for (const WindowSolution& win : s.windows)
+    size += 6 * sizeof(std::int32_t) + 2 * sizeof(std::uint64_t) + win.cells.size() + win.z.size() * sizeof(double);
+  for (const ComponentSolution& c : s.components)
+    size += 2 * sizeof(std::uint64_t) + 4 * sizeof(std::int32_t) + c.values.size() * sizeof(double);
   Writer w;
+  w.bytes.reserve(size);  // one allocation: solutions run to megabytes
   w.put<std::uint64_t>(s.windows.size());
   w.put<std::uint64_t>(s.components.size());
   for (const WindowSolution& win : s.windows) {

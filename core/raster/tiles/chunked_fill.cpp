@@ -4,6 +4,7 @@
 #include "mcmd/chunked_fill.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <tuple>
 
@@ -109,25 +110,31 @@ void put_moments(CoarseGuide& guide, const ChunkSummary& s) {
   guide.set_moments(is, js, part);
 }
 
-// `out`, whose write touches only the part of a rectangle inside `own`.
+// `out`, whose write touches only the part of a rectangle inside `own` (its
+// buffers kept from one write to the next).
 RasterAccess clipped(const RasterAccess& out, const CellRect& own) {
   RasterAccess a = out;
-  a.write = [&out, own](int x0, int y0, int w, int h, const double* z, const std::uint8_t* mask) {
+  struct Buffers {
+    std::vector<double> z;
+    std::vector<std::uint8_t> mask;
+  };
+  a.write = [&out, own, b = std::make_shared<Buffers>()](int x0, int y0, int w, int h, const double* z,
+                                                         const std::uint8_t* mask) {
     const int cx0 = std::max(x0, own.x0), cy0 = std::max(y0, own.y0);
     const int cx1 = std::min(x0 + w, own.x0 + own.w), cy1 = std::min(y0 + h, own.y0 + own.h);
     if (cx0 >= cx1 || cy0 >= cy1) return;
     const int cw = cx1 - cx0, ch = cy1 - cy0;
-    std::vector<double> zc(static_cast<std::size_t>(cw) * ch);
-    std::vector<std::uint8_t> mc(zc.size());
+    b->z.resize(static_cast<std::size_t>(cw) * ch);
+    b->mask.resize(b->z.size());
     bool any = false;
     for (int y = 0; y < ch; ++y)
       for (int x = 0; x < cw; ++x) {
         const std::size_t from = static_cast<std::size_t>(cy0 - y0 + y) * w + (cx0 - x0 + x);
-        zc[static_cast<std::size_t>(y) * cw + x] = z[from];
-        mc[static_cast<std::size_t>(y) * cw + x] = mask[from];
+        b->z[static_cast<std::size_t>(y) * cw + x] = z[from];
+        b->mask[static_cast<std::size_t>(y) * cw + x] = mask[from];
         any = any || mask[from];
       }
-    if (any) out.write(cx0, cy0, cw, ch, zc.data(), mc.data());
+    if (any) out.write(cx0, cy0, cw, ch, b->z.data(), b->mask.data());
   };
   return a;
 }
@@ -146,9 +153,9 @@ WindowSolution compact(const WindowResult& w, const WindowInput& in) {
   return s;
 }
 
-// The window's result back over its whole region (0 at known cells).
-WindowResult expanded(const WindowSolution& s) {
-  WindowResult r;
+// The window's result back over its whole region (0 at known cells), into
+// `r` (its buffers reused from window to window).
+void expand(const WindowSolution& s, WindowResult& r) {
   r.tx = s.tx, r.ty = s.ty;
   r.xs = Range{s.x0, s.x1}, r.ys = Range{s.y0, s.y1};
   r.z.assign(s.cells.size(), 0.0);
@@ -159,7 +166,6 @@ WindowResult expanded(const WindowSolution& s) {
     r.z[i] = s.z.at(k++);
     r.write[i] = s.cells[i] == 2;
   }
-  return r;
 }
 
 }  // namespace
@@ -263,6 +269,7 @@ ChunkSolution solve_chunk(const RasterAccess& raster, const ChunkedPlan& plan, C
   ChunkSolution out;
   if (!st.voids) return out;
   const int P = tp.layout.x.step(), nx = tp.layout.x.count();
+  detail::JobInput in;  // its buffers serve every job of the chunk
   for (const detail::Job& job : tp.jobs) {
     if (job.component) {
       const auto [cx, cy] = st.component_centres[job.index];
@@ -272,13 +279,13 @@ ChunkSolution solve_chunk(const RasterAccess& raster, const ChunkedPlan& plan, C
       if (!inside(tx * P, ty * P, own)) continue;
     }
     report(progress, 0.0);
-    const std::shared_ptr<detail::JobInput> in = detail::read_input(raster, tp, job);
-    detail::JobResult r = detail::solve_job(raster, tp, job, *in, st.max_distance, progress);
+    detail::read_input(raster, tp, job, in);
+    detail::JobResult r = detail::solve_job(raster, tp, job, in, st.max_distance, progress);
     if (job.component) {
       const detail::Box& b = tp.small[job.index].box;
       out.components.push_back(ComponentSolution{job.index, b.x0, b.y0, b.x1, b.y1, std::move(r.values)});
     } else {
-      out.windows.push_back(compact(r.window, in->window));
+      out.windows.push_back(compact(r.window, in.window));
     }
   }
   return out;
@@ -317,9 +324,11 @@ void blend_chunk(const RasterAccess& out, const ChunkedPlan& plan, const std::ve
   const int P = tp.layout.x.step();
   Blender blender(tp.layout, chunk.write, Range{own.x0 - P, own.x0 + own.w + P});
   int rows_ended = 0;
+  WindowResult result;
   for (const WindowSolution* w : windows) {
     for (; rows_ended < w->ty; ++rows_ended) blender.end_row(rows_ended);
-    blender.add(expanded(*w));
+    expand(*w, result);
+    blender.add(result);
   }
   for (; rows_ended < tp.layout.y.count(); ++rows_ended) blender.end_row(rows_ended);
 

@@ -64,24 +64,31 @@ bool in_field(const TilePlan& plan, const Job& job) { return job.component && pl
 
 std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan& plan, const Job& job) {
   auto in = std::make_shared<JobInput>();
+  read_input(raster, plan, job, *in);
+  return in;
+}
+
+void read_input(const RasterAccess& raster, const TilePlan& plan, const Job& job, JobInput& in) {
+  in.window.tx = in.window.ty = 0;
+  in.grid = ComponentGrid{};
+  in.field = Box{};
   if (in_field(plan, job)) {
-    in->field = void_field_rect(plan.small[job.index].box, raster.width, raster.height);
-    in->window.rect = ReadRect{in->field.x0, in->field.y0, in->field.width(), in->field.height()};
+    in.field = void_field_rect(plan.small[job.index].box, raster.width, raster.height);
+    in.window.rect = ReadRect{in.field.x0, in.field.y0, in.field.width(), in.field.height()};
   } else if (job.component) {
-    in->grid = component_grid(plan.small[job.index].box, raster.width, raster.height);
-    in->window.rect = in->grid.rect;
+    in.grid = component_grid(plan.small[job.index].box, raster.width, raster.height);
+    in.window.rect = in.grid.rect;
   } else {
     const int nx = plan.layout.x.count();
-    in->window.tx = static_cast<int>(job.index % nx);
-    in->window.ty = static_cast<int>(job.index / nx);
-    in->window.rect = window_read_rect(plan.layout, in->window.tx, in->window.ty, plan.params.method);
+    in.window.tx = static_cast<int>(job.index % nx);
+    in.window.ty = static_cast<int>(job.index / nx);
+    in.window.rect = window_read_rect(plan.layout, in.window.tx, in.window.ty, plan.params.method);
   }
-  const ReadRect& r = in->window.rect;
+  const ReadRect& r = in.window.rect;
   const std::size_t cells = static_cast<std::size_t>(r.w) * r.h;
-  in->window.z.resize(cells);
-  in->window.valid.resize(cells);
-  raster.read(r.x0, r.y0, r.w, r.h, in->window.z.data(), in->window.valid.data());
-  return in;
+  in.window.z.resize(cells);
+  in.window.valid.resize(cells);
+  raster.read(r.x0, r.y0, r.w, r.h, in.window.z.data(), in.window.valid.data());
 }
 
 JobResult solve_job(const RasterAccess& raster, const TilePlan& plan, const Job& job, const JobInput& in,

@@ -31,6 +31,8 @@ struct JobResult {
 
 // Read a job's input (raster.read, on the calling thread).
 std::shared_ptr<JobInput> read_input(const RasterAccess& raster, const TilePlan& plan, const Job& job);
+// The same into `in`, whose buffers are reused (a caller reading jobs one by one).
+void read_input(const RasterAccess& raster, const TilePlan& plan, const Job& job, JobInput& in);
 
 // Solve a job (any thread): a window's fill with the small components'
 // cells taken off its writes, or a component's values.
