@@ -8,6 +8,7 @@ import sys
 import time
 from contextlib import nullcontext
 
+import cloudpickle
 import dask
 import dask.array as da
 import numpy as np
@@ -17,6 +18,9 @@ from distributed import Client, LocalCluster
 import mcmd
 import mcmd.dask
 from conftest import cli_fill, read, same_bits, write
+
+# This file's functions run on `dask worker` processes, which cannot import it.
+cloudpickle.register_pickle_by_value(sys.modules[__name__])
 
 H, W = 520, 610
 TILE = ["-o", "TILE_SIZE=65", "-o", "TILING=ALWAYS"]
@@ -265,6 +269,12 @@ def test_docs_example_runs_on_a_distributed_client(tmp_path, cluster):
     assert same_bits(read(tmp_path / "filled.tif"), want)
 
 
+def held_by_the_steps():
+    """On a worker: the files kept open and the plans kept by mcmd.dask's tasks."""
+    steps = sys.modules.get("mcmd.dask._steps")
+    return [] if steps is None else [*steps._SOURCES, *steps._PLANS]
+
+
 def test_a_cluster_of_dask_scheduler_and_dask_worker_processes(tmp_path):
     """A real multi-process cluster: `dask scheduler` and two `dask worker`
     processes on localhost, used by python3 -m mcmd.dask and by a Client."""
@@ -285,12 +295,15 @@ def test_a_cluster_of_dask_scheduler_and_dask_worker_processes(tmp_path):
         with Client(scheduler_file=str(address_file), timeout=WAIT) as client:
             client.wait_for_workers(2, timeout=WAIT)
             assert len({pid for pid in client.run(os.getpid).values()} | {os.getpid()}) == 3
-            lazy = mcmd.dask.fill(da.from_array(a, chunks=128), nodata=-9999, tile_size=65, tiling="ALWAYS")
-            assert same_bits(client.compute(lazy).result(timeout=WAIT), want)
             p = run_module(src, tmp_path / "dask.tif", "--scheduler", client.scheduler.address, "--chunk", "128", "-q",
                            *TILE)
             assert p.returncode == 0, p.stderr
             assert same_bits(read(tmp_path / "dask.tif"), want)
+            # The run over, its workers hold neither its file open (nor so
+            # GDAL's decoded blocks of it) nor its plan.
+            assert client.run(held_by_the_steps) == {w: [] for w in client.run(os.getpid)}
+            lazy = mcmd.dask.fill(da.from_array(a, chunks=128), nodata=-9999, tile_size=65, tiling="ALWAYS")
+            assert same_bits(client.compute(lazy).result(timeout=WAIT), want)
     finally:
         for p in reversed(procs):
             p.terminate()

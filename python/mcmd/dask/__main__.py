@@ -23,6 +23,7 @@ import os
 import shutil
 import sys
 import threading
+import uuid
 
 _FLAG_OPTIONS = {"-md": "MAX_DISTANCE", "-rs": "RS", "-seed": "SEED", "-method": "METHOD", "-tile": "TILE_SIZE"}
 _FLAGS_OF = {"FILL_FROM": "-fill-from", "FILL_FROM_RESAMPLING": "-fill-from", "RIVERS": "-rivers",
@@ -136,12 +137,14 @@ def check_options(a, src) -> list:
 
 
 def band(a, src, b: int, options: list) -> tuple:
-    """(graph, output chunks, gathered summaries' key, dtype) of band b's fill."""
+    """(graph, output chunks, gathered summaries' key, dtype, token) of band b's fill."""
     import dask.base
     from osgeo import gdal
     from . import _file
     stat = os.stat(a.src)
-    token = dask.base.tokenize(os.path.abspath(a.src), stat.st_mtime_ns, stat.st_size, b, options)
+    # This run's own token: a worker that served an earlier run starts afresh
+    # (its plan and its decoded blocks of SRC are not reused: _steps.forget).
+    token = dask.base.tokenize(os.path.abspath(a.src), stat.st_mtime_ns, stat.st_size, b, options, uuid.uuid4().hex)
     spec, dtype = _file.source_spec(a.src, b, options, token)
     sb = src.GetRasterBand(b)
     marked = spec.nodata is not None or dtype.kind == "f" or not sb.GetMaskFlags() & gdal.GMF_ALL_VALID
@@ -149,7 +152,7 @@ def band(a, src, b: int, options: list) -> tuple:
         raise Failure(f"band {b} has no nodata value, mask or NaN cell: nothing marks the voids "
                       "(set a nodata value, e.g. gdal_edit.py -a_nodata)")
     dsk, out, gather_key = _file.band_graph(a.src, b, spec, a.chunk, hold=holds(spec, dtype))
-    return dsk, out, gather_key, dtype
+    return dsk, out, gather_key, dtype, token
 
 
 def holds(spec, dtype) -> bool:
@@ -173,7 +176,7 @@ def on_threads(a, src, graphs, tmp, zarr) -> None:
         with lock:
             writer.write(b, x0, y0, block)
 
-    for b, (graph, out, _, _) in graphs.items():
+    for b, (graph, out, _, _, _) in graphs.items():
         dsk.update(graph)
         for k, (key, x0, y0) in enumerate(out):
             stores.append((f"mcmd-store-{b}", k))
@@ -203,7 +206,7 @@ def on_cluster(a, src, graphs, tmp, zarr) -> None:
     try:
         writer = zarr_writer(src, graphs, tmp) if zarr else geotiff_writer(a, src, graphs, tmp)
         futures, where = [], {}
-        for b, (graph, out, gather_key, _) in graphs.items():
+        for b, (graph, out, gather_key, _, _) in graphs.items():
             if gather_key is None:
                 fs = client.get(graph, [key for key, _, _ in out], sync=False)
             else:
@@ -231,9 +234,20 @@ def on_cluster(a, src, graphs, tmp, zarr) -> None:
             raise failed[0]
         writer.close()
     finally:
+        release(client, [token for *_, token in graphs.values()])
         client.close()
         if cluster is not None:
             cluster.close()
+
+
+def release(client, tokens: list) -> None:
+    """The workers let go of this run's plans and open files (and so of
+    GDAL's decoded blocks of SRC)."""
+    from . import _steps
+    try:
+        client.run(_steps.forget, tokens)
+    except Exception:  # noqa: BLE001  (a worker gone: its caches went with it)
+        pass
 
 
 class geotiff_writer:
@@ -299,7 +313,7 @@ class zarr_writer:
         crs.attrs.update({"_ARRAY_DIMENSIONS": [], "crs_wkt": src.GetProjection(), "spatial_ref": src.GetProjection(),
                           "GeoTransform": " ".join(repr(v) for v in gt)})
         self.arrays = {}
-        for b, (graph, out, _, dtype) in graphs.items():
+        for b, (graph, out, _, dtype, _) in graphs.items():
             sb = src.GetRasterBand(b)
             chunks = (min((y0 for _, _, y0 in out if y0 > 0), default=H),
                       min((x0 for _, x0, _ in out if x0 > 0), default=W))

@@ -49,6 +49,17 @@ _SOURCES_KEPT = 4
 _SOURCES_LOCK = threading.Lock()
 
 
+def forget(tokens: list) -> None:
+    """Drop the plans and open files of these fills (run on each worker when
+    a fill is done)."""
+    with _PLANS_LOCK:
+        for token in tokens:
+            _PLANS.pop(token, None)
+    with _SOURCES_LOCK:
+        for key in [k for k in _SOURCES if k[1] in tokens]:
+            del _SOURCES[key]
+
+
 def _source(window: Window, spec: Spec) -> tuple:
     """This process's open dataset of the window's file, and the lock its
     reads take. One dataset per process: its blocks, decoded once, serve
