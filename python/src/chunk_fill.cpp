@@ -124,7 +124,7 @@ ChunkSummary summary_of(const py::dict& d) {
 
 // A chunk's solution as one flat byte array (it crosses processes: one
 // buffer pickles without a copy and parses without Python objects):
-// counts, then per window tx ty x0 x1 y0 y1 (int32), its cells (uint8) and
+// counts, then per window tx ty x0 x1 y0 y1 (int32), its runs (int32) and
 // z (double), per component its index (uint64), box (int32) and values.
 class Writer {
  public:
@@ -174,7 +174,8 @@ class Reader {
 py::array_t<std::uint8_t> solution_bytes(const ChunkSolution& s) {
   std::size_t size = 2 * sizeof(std::uint64_t);
   for (const WindowSolution& win : s.windows)
-    size += 6 * sizeof(std::int32_t) + 2 * sizeof(std::uint64_t) + win.cells.size() + win.z.size() * sizeof(double);
+    size += 6 * sizeof(std::int32_t) + 2 * sizeof(std::uint64_t) + win.runs.size() * sizeof(std::int32_t) +
+            win.z.size() * sizeof(double);
   for (const ComponentSolution& c : s.components)
     size += 2 * sizeof(std::uint64_t) + 4 * sizeof(std::int32_t) + c.values.size() * sizeof(double);
   Writer w;
@@ -183,7 +184,7 @@ py::array_t<std::uint8_t> solution_bytes(const ChunkSolution& s) {
   w.put<std::uint64_t>(s.components.size());
   for (const WindowSolution& win : s.windows) {
     for (const int v : {win.tx, win.ty, win.x0, win.x1, win.y0, win.y1}) w.put<std::int32_t>(v);
-    w.put_all(win.cells);
+    w.put_all(win.runs);
     w.put_all(win.z);
   }
   for (const ComponentSolution& c : s.components) {
@@ -203,7 +204,7 @@ ChunkSolution solution_of(const py::handle& h) {
   s.components.resize(r.get<std::uint64_t>());
   for (WindowSolution& w : s.windows) {
     for (int* v : {&w.tx, &w.ty, &w.x0, &w.x1, &w.y0, &w.y1}) *v = r.get<std::int32_t>();
-    w.cells = r.get_all<std::uint8_t>();
+    w.runs = r.get_all<std::int32_t>();
     w.z = r.get_all<double>();
   }
   for (ComponentSolution& c : s.components) {

@@ -81,12 +81,13 @@ class ChunkedPlan {
 };
 
 // A window's fill over its tile's output region, kept only where it can
-// matter: at the region's void cells (a blend writes nothing else).
+// matter: at the region's void cells (a blend writes nothing else), as runs,
+// so that it is small where voids are few.
 struct WindowSolution {
   int tx = 0, ty = 0;
   int x0 = 0, x1 = 0, y0 = 0, y1 = 0;  // the tile's output region
-  std::vector<std::uint8_t> cells;     // per region cell: 0 known, 1 void, 2 void this window writes
-  std::vector<double> z;               // the values of the void cells, row-major
+  std::vector<std::int32_t> runs;      // per run of void cells: y, x0, x1 (exclusive), 1 if this window writes them
+  std::vector<double> z;               // their values, run after run
 };
 struct ComponentSolution {
   std::size_t index = 0;      // among the plan's small components

@@ -139,32 +139,48 @@ RasterAccess clipped(const RasterAccess& out, const CellRect& own) {
   return a;
 }
 
-// A window's result kept at the region's void cells only.
+// A window's result kept at the region's void cells only: runs of void cells
+// with the same write flag.
 WindowSolution compact(const WindowResult& w, const WindowInput& in) {
   WindowSolution s{w.tx, w.ty, w.xs.begin, w.xs.end, w.ys.begin, w.ys.end, {}, {}};
-  s.cells.resize(w.z.size());
-  std::size_t i = 0;
-  for (int y = w.ys.begin; y < w.ys.end; ++y)
-    for (int x = w.xs.begin; x < w.xs.end; ++x, ++i) {
-      const bool known = in.valid[static_cast<std::size_t>(y - in.rect.y0) * in.rect.w + (x - in.rect.x0)];
-      s.cells[i] = known ? 0 : (w.write[i] ? 2 : 1);
-      if (!known) s.z.push_back(w.z[i]);
-    }
+  const int n = w.xs.size();
+  for (int y = w.ys.begin; y < w.ys.end; ++y) {
+    const std::size_t row = static_cast<std::size_t>(y - w.ys.begin) * n;
+    const std::uint8_t* valid = in.valid.data() + static_cast<std::size_t>(y - in.rect.y0) * in.rect.w +
+                                (w.xs.begin - in.rect.x0);
+    detail::for_each_zero_run(valid, n, [&](int a, int b) {
+      for (int x = a; x < b;) {
+        const std::uint8_t writes = w.write[row + x] ? 1 : 0;
+        const int start = x;
+        while (x < b && (w.write[row + x] ? 1 : 0) == writes) ++x;
+        s.runs.insert(s.runs.end(), {y, w.xs.begin + start, w.xs.begin + x, writes});
+        s.z.insert(s.z.end(), w.z.begin() + static_cast<std::ptrdiff_t>(row + start),
+                   w.z.begin() + static_cast<std::ptrdiff_t>(row + x));
+      }
+    });
+  }
   return s;
 }
 
 // The window's result back over its whole region (0 at known cells), into
-// `r` (its buffers reused from window to window).
+// `r` (its buffers reused from window to window). Throws std::invalid_argument
+// for a solution that does not fit its region (it may have crossed a network).
 void expand(const WindowSolution& s, WindowResult& r) {
   r.tx = s.tx, r.ty = s.ty;
   r.xs = Range{s.x0, s.x1}, r.ys = Range{s.y0, s.y1};
-  r.z.assign(s.cells.size(), 0.0);
-  r.write.assign(s.cells.size(), 0);
+  const int w = r.xs.size(), h = r.ys.size();
+  if (w < 0 || h < 0 || s.runs.size() % 4 != 0) throw std::invalid_argument("a window's solution does not fit it");
+  r.z.assign(static_cast<std::size_t>(w) * h, 0.0);
+  r.write.assign(r.z.size(), 0);
   std::size_t k = 0;
-  for (std::size_t i = 0; i < s.cells.size(); ++i) {
-    if (!s.cells[i]) continue;
-    r.z[i] = s.z.at(k++);
-    r.write[i] = s.cells[i] == 2;
+  for (std::size_t q = 0; q < s.runs.size(); q += 4) {
+    const int y = s.runs[q], a = s.runs[q + 1], b = s.runs[q + 2];
+    if (y < s.y0 || y >= s.y1 || a < s.x0 || b > s.x1 || a > b || s.z.size() - k < static_cast<std::size_t>(b - a))
+      throw std::invalid_argument("a window's solution does not fit it");
+    const std::size_t at = static_cast<std::size_t>(y - s.y0) * w + (a - s.x0);
+    std::copy_n(s.z.begin() + static_cast<std::ptrdiff_t>(k), b - a, r.z.begin() + static_cast<std::ptrdiff_t>(at));
+    if (s.runs[q + 3]) std::fill_n(r.write.begin() + static_cast<std::ptrdiff_t>(at), b - a, std::uint8_t{1});
+    k += static_cast<std::size_t>(b - a);
   }
 }
 
