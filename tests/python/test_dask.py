@@ -192,17 +192,19 @@ def test_module_writes_the_cli_s_geotiff_and_zarr(tmp_path):
 
 
 def test_module_local_cluster_neither_compresses_nor_trims(monkeypatch):
-    # --workers N's cluster: no lz4 between processes of one machine, and
+    # --workers N's cluster: no lz4 between processes of one machine,
     # glibc's own malloc tuning in its workers (no MALLOC_TRIM_THRESHOLD_,
     # which the Nanny sets by default and which also leaks into this
-    # process's environment once any default LocalCluster has started).
+    # process's environment once any default LocalCluster has started), and
+    # no stack sampling for a dashboard it does not have.
     monkeypatch.delenv("MALLOC_TRIM_THRESHOLD_", raising=False)
     from mcmd.dask._cluster import local_cluster as module_cluster
     with module_cluster(1) as c, Client(c) as client:
         client.wait_for_workers(1, timeout=WAIT)
         seen = client.run(lambda: (os.environ.get("MALLOC_TRIM_THRESHOLD_"),
-                                   dask.config.get("distributed.comm.compression")))
-    assert list(seen.values()) == [(None, None)]
+                                   dask.config.get("distributed.comm.compression"),
+                                   dask.config.get("distributed.worker.profile.enabled")))
+    assert list(seen.values()) == [(None, None, False)]
 
 
 def test_module_errors_are_one_line_and_leave_nothing(tmp_path):
