@@ -130,23 +130,29 @@ def skeleton_figures(run: Runner, md: list, times: dict):
     size = ["-size", str(n), str(n), "-skeleton", "-seed", "5"]
     none = run.terrain("skeleton_dem", size + ["-method", "none"], picture=False)
     write(os.path.join(PICS, "skeleton_dem.png"), np.where(np.isnan(none["z"]), 255, 0).astype(np.uint8))
-    paper = ["-delta", "paper", "-I", "1.0", "-Ibu", "6.0", "-H", "0.49", "-rt", "0.0", "-rs", "0.5"]
+    # The paper's figure is not eroded: -erode 0 (erosion is on by default around a skeleton).
+    paper = ["-delta", "paper", "-I", "1.0", "-Ibu", "6.0", "-H", "0.49", "-rt", "0.0", "-rs", "0.5", "-erode", "0"]
     te = run.terrain("fig11a_te", size + ["-method", "paper-te"] + paper, timed=True)
     ds = run.terrain("fig11a_ds", size + ["-method", "paper-ds"] + paper, timed=True)
     bf = run.terrain("fig11a_butterfly", size + ["-method", "paper", "-scheme", "butterfly"] + paper, timed=True)
     mdi = run.terrain("fig11a_mdi", size + ["-method", "mdi", "-scheme", "te"] + paper, timed=True)
-    mc = run.terrain("fig11a_mcmd", size + ["-rs", "0.1", "-H", "0.85"], timed=True)
+    mc = run.terrain("fig11a_mcmd", size + ["-rs", "0.1", "-H", "0.85", "-erode", "0"], timed=True)
+    me = run.terrain("fig11a_mcmd_eroded", size + ["-rs", "0.1", "-H", "0.85"], timed=True)
     times["skeleton"] = {"te": te["seconds"], "ds": ds["seconds"], "mcmd": mc["seconds"], "mdi": mdi["seconds"],
-                         "butterfly": bf["seconds"]}
+                         "butterfly": bf["seconds"], "eroded": me["seconds"]}
     md += ["## Fig. 11(a): around a ridges-and-rivers skeleton", "",
            "`-skeleton` on 513×513 (seed 5): ridge particle couples, river particles that join "
            "and drain to the border (left: the skeleton DEM, `-method none`, ridge and river cells "
            "black). The paper's parameters `-I 1.0 -Ibu 6.0 -H 0.49 -rt 0 -rs 0.5` with each "
-           "top-down scheme and MDI, and the default method with `-rs 0.1 -H 0.85`.", "",
-           "| skeleton | paper te | paper ds | butterfly | MDI | default method |", "|---|---|---|---|---|---|",
+           "top-down scheme and MDI, and the default method with `-rs 0.1 -H 0.85`, all without erosion "
+           "(`-erode 0`, as the paper); last, the default method as `mcmd_terrain` makes it, eroded "
+           "(docs/terrain.md, bench/REALISM.md).", "",
+           "| skeleton | paper te | paper ds | butterfly | MDI | default method | default method, eroded |",
+           "|---|---|---|---|---|---|---|",
            "| ![s](terrain/skeleton_dem.png) | ![te](terrain/fig11a_te.png) | ![ds](terrain/fig11a_ds.png) | "
-           "![bf](terrain/fig11a_butterfly.png) | ![mdi](terrain/fig11a_mdi.png) | ![m](terrain/fig11a_mcmd.png) |",
-           "| | " + " | ".join(f"lattice {checks.grid_streaks(r['z']):.2f}" for r in (te, ds, bf, mdi, mc)) + " |", ""]
+           "![bf](terrain/fig11a_butterfly.png) | ![mdi](terrain/fig11a_mdi.png) | ![m](terrain/fig11a_mcmd.png) | "
+           "![e](terrain/fig11a_mcmd_eroded.png) |",
+           "| | " + " | ".join(f"lattice {checks.grid_streaks(r['z']):.2f}" for r in (te, ds, bf, mdi, mc, me)) + " |", ""]
     path = write(os.path.join(WORK, "lsystem.png"), sketches.lsystem_sketch(n))
     ls = run.terrain("fig11b_te", ["-method", "paper-te", "-delta", "paper", "-I", "1.1", "-Ibu", "10.0", "-H", "0.48", "-rt", "0",
                                    "-rs", "0.5", "-seed", "3"], path, timed=True)
@@ -295,7 +301,8 @@ def times_table(md: list, times: dict, repeats: int):
            f"| a million points, material + two 5×5 median passes (Fig. 13) | 3.66 s (0.34 + 3.32) | "
            f"{f(m['te'])} s ({f(m['raw'])} s without the median) | — | — |",
            f"| the acceptance sketch, 513×513 | — | — | — | {f(times['acceptance'])} s |",
-           "", f"MDI on the skeleton: {f(k['mdi'])} s; the butterfly scheme: {f(k['butterfly'])} s.", ""]
+           "", f"MDI on the skeleton: {f(k['mdi'])} s; the butterfly scheme: {f(k['butterfly'])} s; the default "
+           f"method on the skeleton with its erosion (the tool's default there): {f(k['eroded'])} s.", ""]
 
 
 def main():

@@ -218,7 +218,12 @@ void make_terrain(GDALRasterBand& target, GDALRasterBand* sketch, const TerrainO
   const ErosionParams erosion = erosion_of(target, sketch != nullptr, o, params.threads);
   const double made = erosion.steps == 0 ? 0.9 : 0.5;  // the erosion takes the rest
   synthesize(c, params, sub_progress(progress, 0.1, made));
-  if (erosion.steps != 0) erode(c, erosion, sub_progress(progress, made, 0.9));
+  if (erosion.steps != 0) {
+    const ErosionReport r = erode(c, erosion, sub_progress(progress, made, 0.9));
+    CPLDebug("MCMD", "erosion: %d grids, %d steps on the coarser ones, %d on the finest, %s (%.1f %% of the channels moved "
+             "in its last step), K %.4g", r.grids, r.coarse_steps, r.steps, r.converged ? "converged" : "not converged",
+             100.0 * r.moved, r.K);
+  }
   if (o.median > 0) median_filter(c, o.median, o.median_passes, o.median_all, params.threads);
   report(progress, 0.95);
   write_canvas(target, c, params.method == TerrainMethod::none);

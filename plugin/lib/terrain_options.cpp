@@ -231,7 +231,7 @@ const char* terrain_option_names() {
 
 int erosion_steps(const TerrainOptions& o, bool has_sketch) {
   if (o.has_erosion) return o.erosion.steps;
-  if (o.terrain.method == TerrainMethod::none || has_sketch || !o.peaks.empty()) return 0;
+  if (o.terrain.method == TerrainMethod::none || has_sketch || !o.peaks.empty() || !o.points.empty()) return 0;
   return kErodeAuto;
 }
 

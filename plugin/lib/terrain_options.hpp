@@ -47,15 +47,16 @@ struct TerrainOptions {
   int median = 0, median_passes = 1;
   bool median_all = false;
   // EROSION and its law, UPLIFT, DIFFUSION, TALUS. Without EROSION the
-  // skeleton and from-scratch terrains are eroded (auto), a sketch or peaks
-  // are not.
+  // skeleton, from-scratch and line terrains are eroded (auto), a sketch,
+  // peaks or points are not.
   ErosionParams erosion{};
   bool has_erosion = false;
   std::string uplift_file;  // UPLIFT=FILE: a raster of relative rates, the terrain's size
 };
 
-// The erosion steps o asks for, or its default: auto for the skeleton and
-// from-scratch terrains, 0 for a sketch, peaks, or METHOD=none.
+// The erosion steps o asks for, or its default: auto for the skeleton,
+// from-scratch and line terrains, 0 for a sketch, peaks, points or
+// METHOD=none.
 int erosion_steps(const TerrainOptions& o, bool has_sketch);
 
 // Parse NAME=VALUE strings (names case-insensitive). Throws OptionError.

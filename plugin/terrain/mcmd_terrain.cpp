@@ -1,9 +1,11 @@
 // mcmd_terrain: make a terrain with MCMD (gdal tool conventions).
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "cli/error_log.hpp"
+#include "cli/general_options.hpp"
 #include "cpl_conv.h"
 #include "gdal.h"
 #include "terrain/terrain_args.hpp"
@@ -40,10 +42,13 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   GDALAllRegister();
-  if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(GIntBig{64} << 20);
   mcmd::cli::ErrorLog log(mcmd::cli::ErrorLog::Reach::every_thread);
   try {
-    const mcmd::cli::TerrainArgs args = mcmd::cli::parse_terrain_args(argc, argv);
+    // GDAL's general options (--config, --debug on, --formats, ...) first.
+    const std::optional<CPLStringList> argl = mcmd::cli::apply_gdal_general_options(argc, argv);
+    if (!argl) return 0;
+    if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(GIntBig{64} << 20);
+    const mcmd::cli::TerrainArgs args = mcmd::cli::parse_terrain_args(argl->size(), argl->List());
     if (args.help) return print(mcmd::cli::terrain_help_text());
     if (args.version) return print(mcmd::cli::terrain_version_text());
     mcmd::cli::run_terrain(args, log, args.quiet ? nullptr : progress);

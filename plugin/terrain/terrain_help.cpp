@@ -128,8 +128,9 @@ Synthesis:
   -o NAME=VALUE    Any MCMDTerrain option, e.g. -o RIDGE_COUPLES=4.
 
 Erosion (landscape evolution that grows valleys into the terrain; on for
--skeleton and from-scratch terrains, off for a sketch and -peaks; constraint
-cells never change, rivers keep draining along their course):
+-skeleton, from-scratch and line terrains, off for a sketch, -peaks and
+-point; constraint cells never change, rivers keep draining along their
+course):
   -erode STEPS|auto|0  Steps on the finest grid (default auto: until the
                    network converges; 0: none). Coarser grids run first.
   -erosion K,m,n   Stream-power law E = K A^m S^n: K > 0 or auto (default:

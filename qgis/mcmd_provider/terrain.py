@@ -69,8 +69,8 @@ STRINGS = [
     ('RIVER_Z', '-river-z', 'Height of river line cells without one (Z1,Z2: source, mouth)', False),
     ('ZRANGE', '-zrange', 'Elevations of the grey levels or generator, "MIN MAX"', False),
     ('UNKNOWN', '-unknown', 'Sketch cells to synthesise (white, black, none or a value)', True),
-    ('EROSION', '-erode', 'Erosion: auto, steps on the finest grid, or 0 (empty: on for a skeleton or '
-     'from scratch, off for a sketch)', False),
+    ('EROSION', '-erode', 'Erosion: auto, steps on the finest grid, or 0 (empty: on for a skeleton, '
+     'from scratch or around lines, off for a sketch)', False),
     ('EROSION_LAW', '-erosion', 'Erosion: stream-power law K,m,n (K a number or auto)', True),
     ('UPLIFT', '-uplift', 'Erosion: uplift, terrain, uniform or a raster file', True),
 ]

@@ -25,6 +25,10 @@ constexpr double kHillslopeLength = 50.0;
 // Steps at most: on the coarsest grid (until its network converges), on
 // the grids between, and on the finest with EROSION=auto.
 constexpr int kCoarsestSteps = 300, kFinerSteps = 10, kAutoSteps = 40;
+// The finest grid's network comes mostly from the coarser ones; its steps
+// are three cells² of creep long, and its smallest valleys form in a third
+// of the steps (as seen side by side with steps of one: the same valleys).
+constexpr double kFinestCourant = 3.0;
 // The drainage area each river cell brings, in finest cells: a river of a
 // few hundred cells drains like a trunk valley of its raster.
 constexpr double kRiverSource = 100.0;
@@ -171,6 +175,8 @@ ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& pr
     const ErosionGrid& g = grids[l];
     z = l + 1 == levels ? g.initial : refine(z, grids[l + 1], g);
     const bool coarsest = l + 1 == levels, last = l == 0;
+    e.steer = coarsest;
+    e.courant = last && !coarsest ? kFinestCourant : 1.0;
     const int max_steps = last && p.steps != kErodeAuto ? p.steps
                           : coarsest                      ? kCoarsestSteps
                           : last                          ? kAutoSteps

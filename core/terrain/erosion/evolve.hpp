@@ -16,8 +16,10 @@ struct Evolution {
   double m = 0.5, n = 1.0;
   double rate = 1.0;       // a factor of every uplift rate
   double relief = 0.0;     // > 0: steer `rate` so that relief() stays at this
+  bool steer = false;      // steer on this grid (the coarsest; the finer ones keep its rate)
   double hillslope = 1.0;  // the hillslope length ℓ in finest cells: diffusion D = K·ℓ²
   double diffusion = 1.0;  // a factor of D
+  double courant = 1.0;    // a step is this many cells² of creep on its grid
   double talus = 0.0;      // the slope of repose (tangent); 0: none
   int threads = 1;
 };

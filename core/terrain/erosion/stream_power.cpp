@@ -38,18 +38,24 @@ double implicit_height(double b, double zr, double c, double length, double n) {
 }  // namespace
 
 void stream_power_step(std::vector<double>& z, const std::vector<double>& uplift, double rate,
-                       const std::vector<std::uint8_t>& fixed, const Drainage& d, const StreamPower& sp, double dt) {
+                       const std::vector<std::uint8_t>& fixed, const Drainage& d, const StreamPower& sp, double dt,
+                       std::vector<double>& c, int threads) {
+  // Cell by cell, on the threads: the uplift, and c = K·dt·A^m (0: a cell
+  // that does not erode). Then, from the outlets up, the implicit heights.
   const double k = sp.K * dt, lift = rate * dt;
-  for (const std::int32_t i : d.order) {
+  const std::int64_t n = static_cast<std::int64_t>(z.size());
+  c.resize(z.size());
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::int64_t i = 0; i < n; ++i) {
+    c[i] = 0.0;
     if (fixed[i]) continue;
-    const double b = z[i] + uplift[i] * lift;
+    z[i] += uplift[i] * lift;
+    if (d.receiver[i] >= 0) c[i] = k * area_term(d.area[i], sp);
+  }
+  for (const std::int32_t i : d.order) {
+    if (c[i] == 0.0) continue;
     const std::int32_t r = d.receiver[i];
-    if (r < 0) {
-      z[i] = b;
-      continue;
-    }
-    const double length = step_length(i, r, d.w) * sp.spacing;
-    z[i] = implicit_height(b, z[r], k * area_term(d.area[i], sp), length, sp.n);
+    z[i] = implicit_height(z[i], z[r], c[i], step_length(i, r, d.w) * sp.spacing, sp.n);
   }
 }
 

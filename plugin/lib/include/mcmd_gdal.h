@@ -65,7 +65,7 @@ MCMD_API CPLErr MCMDFillNodata(GDALRasterBandH hTargetBand, GDALRasterBandH hMas
  *               RIVERS=<lines> (any OGR format, or a raster mask),
  *               RIDGE_Z=Z[,Z2], RIVER_Z=Z1[,Z2], UPSAMPLE=K,
  *               EROSION=auto|<steps>|NO (default auto for SKELETON and a
- *               terrain without sketch or PEAKS, NO otherwise),
+ *               terrain without sketch, PEAKS or POINTS; NO otherwise),
  *               EROSION_LAW=K,m,n (K a number or auto), UPLIFT=terrain|
  *               uniform|<raster>, DIFFUSION=<factor>, TALUS=<degrees>,
  *               MEDIAN=N, MEDIAN_PASSES, MEDIAN_ALL=YES, NUM_THREADS.

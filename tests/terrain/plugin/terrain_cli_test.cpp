@@ -84,6 +84,31 @@ TEST(TerrainCli, FromScratchWithAnAbsoluteRoughness) {
   EXPECT_GT(hi - lo, 100);
 }
 
+// Erosion is on by default from scratch and around a skeleton, off for a
+// sketch and points (-erode auto turns it on there), and -erode 0 is the
+// synthesis alone.
+TEST(TerrainCli, ErosionDefaults) {
+  TempDir dir;
+  const auto made = [&](std::vector<std::string> args, const std::string& name) {
+    args.insert(args.begin(), "-q");
+    args.push_back(dir.file(name));
+    expect_ok(run_terrain(args));
+    return raw_band(dir.file(name));
+  };
+  const std::vector<std::string> scratch = {"-size", "129", "129", "-rs", "300m"};
+  const std::vector<std::string> skeleton = {"-size", "129", "129", "-skeleton", "-rs", "0.1"};
+  const std::vector<std::string> points = {"-size", "65", "65", "-point", "0", "0", "500", "-point", "64", "64", "900",
+                                           "-rs", "0.2"};
+  for (const auto& [args, eroded] : {std::pair{scratch, true}, std::pair{skeleton, true}, std::pair{points, false}}) {
+    std::vector<std::string> off = args;
+    off.insert(off.end(), {"-erode", "0"});
+    std::vector<std::string> on = args;
+    on.insert(on.end(), {"-erode", "auto"});
+    EXPECT_EQ(made(args, "default.tif") != made(off, "off.tif"), eroded) << args[3];
+    EXPECT_NE(made(on, "on.tif"), made(off, "off.tif")) << args[3];
+  }
+}
+
 // The paper's Fig. 2: corners at a medium elevation, the centre at the top.
 TEST(TerrainCli, FivePointsAreKept) {
   TempDir dir;
