@@ -31,15 +31,15 @@ bool on_border(std::int32_t i, int w, int h) {
   return x == 0 || y == 0 || x == w - 1 || y == h - 1;
 }
 
-// Where each interior cell sends its water (d.lower, d.receiver), row by
+// Where each interior cell sends its water (d.lower, d.to), row by
 // row on `threads`, then each cell's count of the cells sending it water
 // (for the order), gathered from its neighbours' masks.
-void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector<std::int32_t>& higher,
+void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector<std::uint8_t>& higher,
                int threads) {
   const int w = d.w, h = d.h;
-  const auto off = offsets(w);
+  const auto& off = d.offset;
   const std::size_t n = d.level.size();
-  d.receiver.assign(n, -1);
+  d.to.assign(n, kOutlet);
   d.lower.assign(n, 0);
   higher.assign(n, 0);
   const bool divides = !divide.empty();
@@ -50,21 +50,21 @@ void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector
       const double zi = d.level[i];
       unsigned mask = 0, open = 0;  // lower neighbours, and those that are not divides
       double steepest = 0.0;
-      std::int32_t to = -1;
+      std::uint8_t to = kOutlet;
       for (int k = 0; k < 8; ++k) {
         const double s = (zi - d.level[i + off[k]]) * kInverseLength[k];
         if (s > 0) {
           mask |= 1u << k;
           if (!divides || !divide[i + off[k]]) {
-            if (!open || s > steepest) steepest = s, to = i + off[k];
+            if (!open || s > steepest) steepest = s, to = static_cast<std::uint8_t>(k);
             open |= 1u << k;
           } else if (!open && s > steepest) {
-            steepest = s, to = i + off[k];
+            steepest = s, to = static_cast<std::uint8_t>(k);
           }
         }
       }
       d.lower[i] = static_cast<std::uint8_t>(open ? open : mask);
-      d.receiver[i] = to;
+      d.to[i] = to;
     }
   // Neighbour k of cell i is i + off[k]; it sends to i when its bit (k + 4) % 8 is set.
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
@@ -76,7 +76,7 @@ void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector
         const int nx = x + kDx[k], ny = y + kDy[k];
         if (nx > 0 && ny > 0 && nx < w - 1 && ny < h - 1) count += d.lower[i + off[k]] >> ((k + 4) & 7) & 1u;
       }
-      higher[i] = count;
+      higher[i] = static_cast<std::uint8_t>(count);
     }
 }
 
@@ -87,14 +87,14 @@ void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector
 // neighbours in proportion to slope² × contour length (Quinn et al. 1991's
 // weights, Freeman's sharper exponent: flow spreads on hillslopes and
 // gathers in the valleys).
-// d.order is the reverse: outlets first. `higher` ends at -1 everywhere.
-void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std::int32_t>& higher,
+// d.order is the reverse: outlets first. `higher` ends at kTaken everywhere.
+void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std::uint8_t>& higher,
                  std::vector<std::int32_t>& stack) {
-  const int w = d.w;
-  const auto off = offsets(w);
+  constexpr std::uint8_t kTaken = 255;
+  const auto& off = d.offset;
   const std::size_t n = d.level.size();
-  d.area.assign(n, 1.0);
-  for (std::size_t i = 0; i < source.size(); ++i) d.area[i] += source[i];
+  d.area.assign(n, 1.0f);
+  for (std::size_t i = 0; i < source.size(); ++i) d.area[i] += static_cast<float>(source[i]);
   d.order.clear();
   d.order.reserve(n);
   stack.clear();
@@ -105,7 +105,7 @@ void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std
     while (!stack.empty()) {
       const std::int32_t i = stack.back();
       stack.pop_back();
-      higher[i] = -1;
+      higher[i] = kTaken;
       d.order.push_back(i);
       const unsigned mask = d.lower[i];
       if (!mask) continue;  // the border (every interior cell has a lower neighbour)
@@ -120,7 +120,7 @@ void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std
       for (int j = 0; j < 8; ++j)
         if (share[j] > 0) {
           const std::int32_t t = i + off[j];
-          d.area[t] += a * share[j];
+          d.area[t] += static_cast<float>(a * share[j]);
           if (--higher[t] == 0) stack.push_back(t);
         }
     }
@@ -139,12 +139,13 @@ void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const
            Drainage& d, DrainageScratch& s) {
   const std::size_t n = z.size();
   d.w = w, d.h = h;
+  d.offset = offsets(w);
   d.level.resize(n);
   s.mark.assign(n, 0);
   s.heap.clear();
   for (std::int32_t i = 0; i < static_cast<std::int32_t>(n); ++i)
     if (on_border(i, w, h)) s.mark[i] = 1, d.level[i] = z[i], s.heap.push(z[i], i);
-  const auto off = offsets(w);
+  const auto& off = d.offset;
   while (!s.heap.empty()) {
     const auto [lv, i] = s.heap.pop();
     const double above = next_above(lv);
@@ -169,7 +170,7 @@ void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const
 void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides,
                    Drainage& d, DrainageScratch& s) {
   for (const std::int32_t i : d.order) {
-    const std::int32_t r = d.receiver[i];
+    const std::int32_t r = d.receiver(i);
     double v = z[i];
     if (r >= 0) v = std::max(v, next_above(d.level[r]));
     d.level[i] = v;

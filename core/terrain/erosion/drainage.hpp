@@ -12,6 +12,7 @@
 // they run in.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -25,20 +26,28 @@ struct WaterGuides {
   std::vector<double> source;        // w·h: drainage area a cell brings besides its own, in its grid's cells (rivers)
 };
 
+// The 8 directions, clockwise from the east: odd ones diagonal.
+constexpr std::uint8_t kOutlet = 8;  // Drainage::to of a border cell: its water leaves the raster
+
 struct Drainage {
   int w = 0, h = 0;
-  std::vector<double> level;           // the surface the water runs on
-  std::vector<std::int32_t> receiver;  // steepest lower neighbour, -1 on the border
-  std::vector<std::uint8_t> lower;     // bit k: the water goes to neighbour k (drainage.cpp's order)
-  std::vector<std::int32_t> order;     // every cell after all of its lower neighbours
-  std::vector<double> area;            // cells draining through each (itself included)
+  std::array<std::int32_t, 8> offset{};  // index offsets of the directions
+  std::vector<double> level;             // the surface the water runs on
+  std::vector<std::uint8_t> to;          // direction of the steepest lower neighbour, kOutlet on the border
+  std::vector<std::uint8_t> lower;       // bit k: the water goes to the neighbour in direction k
+  std::vector<std::int32_t> order;       // every cell after all of its lower neighbours
+  std::vector<float> area;               // cells draining through each (itself included)
+
+  // The cell receiving i's water (D8), -1 on the border.
+  std::int32_t receiver(std::int32_t i) const { return to[i] == kOutlet ? -1 : i + offset[to[i]]; }
 };
 
 // Scratch reused from step to step.
 struct DrainageScratch {
   morph::RadixHeap heap;
   std::vector<std::uint8_t> mark;
-  std::vector<std::int32_t> count, stack;
+  std::vector<std::uint8_t> count;
+  std::vector<std::int32_t> stack;
   int threads = 1;  // for the row passes; the result does not depend on it
 };
 
@@ -56,10 +65,7 @@ void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const
 void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides,
                    Drainage& d, DrainageScratch& scratch);
 
-// The distance from cell i to its neighbour j in cells (1 or √2).
-inline double step_length(std::int32_t i, std::int32_t j, int w) {
-  const std::int32_t d = i > j ? i - j : j - i;
-  return d == 1 || d == w ? 1.0 : 1.4142135623730951;
-}
+// The length of a step in direction k, in cells (1 or √2).
+inline double step_length(std::uint8_t k) { return k & 1u ? 1.4142135623730951 : 1.0; }
 
 }  // namespace mcmd::terrain

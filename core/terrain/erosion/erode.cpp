@@ -32,6 +32,9 @@ constexpr double kFinestCourant = 3.0;
 // The drainage area each river cell brings, in finest cells: a river of a
 // few hundred cells drains like a trunk valley of its raster.
 constexpr double kRiverSource = 100.0;
+// The margin eroded around the raster, in cells (a quarter of a small
+// raster's side at most).
+constexpr int kMargin = 32;
 
 [[noreturn]] void bad(const std::string& why) { throw std::invalid_argument(why); }
 
@@ -103,6 +106,21 @@ std::vector<double> refine(const std::vector<double>& z, const ErosionGrid& coar
   return up;
 }
 
+// The free cells stretched about the lowest fixed cell to the relief aimed
+// at: the finer grids' valleys, cut deeper than the coarser ones', lower
+// it (by up to a quarter when the coarsest grid is half the finest), which
+// a stronger steering of their uplift makes swing.
+void hold_relief(std::vector<double>& z, const ErosionGrid& g, double aim) {
+  const double now = terrain::relief(z, g);
+  if (!(now > 0)) return;
+  double lo = HUGE_VAL;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (g.fixed[i]) lo = std::min(lo, z[i]);
+  const double stretch = aim / now;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (!g.fixed[i]) z[i] = lo + (z[i] - lo) * stretch;
+}
+
 // The eroded heights (finest cells) into the canvas. The line cells eroded
 // with the land: a smooth warp, the thin plate through their residuals (0
 // at the other constraints), brings them back exactly.
@@ -142,17 +160,44 @@ void check_erosion(const ErosionParams& p, int w, int h) {
   }
 }
 
-ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& progress) {
-  check_erosion(p, canvas.w, canvas.h);
-  for (double z : canvas.z)
-    if (!std::isfinite(z)) bad("the terrain to erode must be finite everywhere");
+namespace {
+
+// The cells of a margin around the raster, its own cells mirrored (the
+// edge not repeated), all free: the outlets are fixed at the margin's
+// border, whose lip (the land eroded below its fixed height) stays there.
+int margin_of(int w, int h) { return std::min(kMargin, std::min(w, h) / 4); }
+
+int mirrored(int v, int n) {
+  if (v < 0) v = -v;
+  if (v >= n) v = 2 * (n - 1) - v;
+  return v;
+}
+
+Canvas with_margin(const Canvas& c, int m) {
+  Canvas big(c.w + 2 * m, c.h + 2 * m);
+  for (int y = 0; y < big.h; ++y)
+    for (int x = 0; x < big.w; ++x) {
+      const int ox = x - m, oy = y - m;
+      big.z[big.index(x, y)] = c.z[c.index(mirrored(ox, c.w), mirrored(oy, c.h))];
+      if (c.contains(ox, oy)) big.state[big.index(x, y)] = c.state[c.index(ox, oy)];
+    }
+  return big;
+}
+
+std::vector<double> map_with_margin(const std::vector<double>& f, int w, int h, int m) {
+  std::vector<double> out(static_cast<std::size_t>(w + 2 * m) * (h + 2 * m));
+  for (int y = 0; y < h + 2 * m; ++y)
+    for (int x = 0; x < w + 2 * m; ++x)
+      out[static_cast<std::size_t>(y) * (w + 2 * m) + x] =
+          f[static_cast<std::size_t>(mirrored(y - m, h)) * w + mirrored(x - m, w)];
+  return out;
+}
+
+// erode() on a canvas that already has its margin of `margin` cells.
+ErosionReport erode_all(Canvas& canvas, int margin, const ErosionParams& p, const ProgressFn& progress) {
   ErosionReport out;
-  report(progress, 0.0);
-  if (p.steps == 0 || canvas.w < 3 || canvas.h < 3) {
-    report(progress, 1.0);
-    return out;
-  }
   std::vector<ErosionGrid> grids{finest(canvas, p)};
+  grids[0].margin = margin;
   const std::vector<double> filled = flooded(grids[0].initial, grids[0].w, grids[0].h);
   grids[0].uplift = uplift_of(grids[0], filled, p);
   while (std::max(grids.back().w, grids.back().h) > terrain::kCoarsestSide) grids.push_back(terrain::coarser(grids.back()));
@@ -163,7 +208,7 @@ ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& pr
   e.m = p.m, e.n = p.n;
   // With K automatic the relief of the uneroded terrain is held; a given K
   // lets the relief follow from it and the uplift.
-  if (p.K == 0.0) e.relief = terrain::relief(filled, grids[0].fixed);
+  if (p.K == 0.0) e.relief = terrain::relief(filled, grids[0]);
   e.hillslope = kHillslopeLength / p.cell_size;
   e.diffusion = p.diffusion;
   e.talus = p.talus >= 90 ? 0.0 : std::tan(p.talus * M_PI / 180.0);
@@ -175,7 +220,10 @@ ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& pr
     const ErosionGrid& g = grids[l];
     z = l + 1 == levels ? g.initial : refine(z, grids[l + 1], g);
     const bool coarsest = l + 1 == levels, last = l == 0;
-    e.steer = coarsest;
+    // The coarsest grid settles the relief; the finer ones only correct it
+    // gently (harder, it swings), hold_relief() the rest.
+    e.gain = coarsest ? 0.5 : 0.15;
+    e.settle = coarsest;
     e.courant = last && !coarsest ? kFinestCourant : 1.0;
     const int max_steps = last && p.steps != kErodeAuto ? p.steps
                           : coarsest                      ? kCoarsestSteps
@@ -189,7 +237,29 @@ ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& pr
     else out.coarse_steps += run.steps;
   }
   out.K = e.K;
+  if (e.relief > 0) hold_relief(z, grids[0], e.relief);
   write_back(canvas, z, grids[0], p.cell_size, e.threads);
+  return out;
+}
+
+}  // namespace
+
+ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& progress) {
+  check_erosion(p, canvas.w, canvas.h);
+  for (double z : canvas.z)
+    if (!std::isfinite(z)) bad("the terrain to erode must be finite everywhere");
+  report(progress, 0.0);
+  if (p.steps == 0 || canvas.w < 3 || canvas.h < 3) {
+    report(progress, 1.0);
+    return {};
+  }
+  const int m = margin_of(canvas.w, canvas.h);
+  Canvas big = with_margin(canvas, m);
+  ErosionParams q = p;
+  if (p.uplift == UpliftPattern::map) q.uplift_map = map_with_margin(p.uplift_map, canvas.w, canvas.h, m);
+  const ErosionReport out = erode_all(big, m, q, progress);
+  for (int y = 0; y < canvas.h; ++y)
+    for (int x = 0; x < canvas.w; ++x) canvas.z[canvas.index(x, y)] = big.z[big.index(x + m, y + m)];
   report(progress, 1.0);
   return out;
 }

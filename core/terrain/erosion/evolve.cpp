@@ -12,35 +12,42 @@ namespace mcmd::terrain {
 namespace {
 
 // Converged: under 3 % of the channels (cells draining at least kChannel
-// cells of the finest grid) changed receiver in a step, and, on the grid
-// that steers it, the relief within 1 % of its aim.
+// cells of the finest grid) changed receiver in a step, and, where the
+// relief must settle, the relief within 1 % of its aim.
 constexpr double kMovedChannels = 0.03, kReliefTolerance = 0.01;
 constexpr double kChannel = 100.0;
 // A grid's hillslopes are at least this many of its cells long: each grid
 // resolves the valleys of its own scale, the finer grids the finer ones.
 constexpr double kGridHillslope = 2.0;
 
-double moved_share(const std::vector<std::int32_t>& before, const Drainage& d, double spacing) {
-  if (before.size() != d.receiver.size()) return 1.0;
+double moved_share(const std::vector<std::uint8_t>& before, const Drainage& d, double spacing) {
+  if (before.size() != d.to.size()) return 1.0;
   const double channel = kChannel / (spacing * spacing);
   std::size_t moved = 0, channels = 0;
   for (std::size_t i = 0; i < before.size(); ++i)
-    if (d.area[i] >= channel) ++channels, moved += before[i] != d.receiver[i];
+    if (d.area[i] >= channel) ++channels, moved += before[i] != d.to[i];
   return channels ? static_cast<double>(moved) / static_cast<double>(channels) : 0.0;
 }
 
 }  // namespace
 
-double relief(const std::vector<double>& z, const std::vector<std::uint8_t>& fixed) {
-  // Its 99th percentile, on a sample of about 2^16 free cells at a fixed
+double relief(const std::vector<double>& z, const ErosionGrid& g) {
+  // Its 99th percentile over the raster's own cells (not the margin, whose
+  // outlets hold a lip), on a sample of about 2^16 of them at a fixed
   // stride: the mountains keep their height, the valleys are cut into them.
   const std::size_t stride = std::max<std::size_t>(1, z.size() >> 16);
   double lo = HUGE_VAL;
   std::vector<double> v;
   v.reserve(z.size() / stride + 1);
-  for (std::size_t i = 0; i < z.size(); ++i)
-    if (fixed[i]) lo = std::min(lo, z[i]);
-    else if (i % stride == 0) v.push_back(z[i]);
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    if (g.fixed[i]) {
+      lo = std::min(lo, z[i]);
+      continue;
+    }
+    const int x = static_cast<int>(i % g.w), y = static_cast<int>(i / g.w);
+    const bool inside = x >= g.margin && y >= g.margin && x < g.w - g.margin && y < g.h - g.margin;
+    if (inside && i % stride == 0) v.push_back(z[i]);
+  }
   if (v.empty() || lo == HUGE_VAL) return 0.0;
   const auto k = v.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(v.size() - 1));
   std::nth_element(v.begin(), k, v.end());
@@ -54,7 +61,7 @@ GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int m
   Drainage d;
   DrainageScratch scratch;
   scratch.threads = e.threads;
-  std::vector<std::int32_t> previous;
+  std::vector<std::uint8_t> previous;
   std::vector<double> factors;
   for (int s = 0; s < max_steps; ++s) {
     report(progress, static_cast<double>(s) / max_steps);
@@ -72,12 +79,12 @@ GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int m
     run.moved = moved_share(previous, d, g.spacing);
     // Hold the relief: steady-state heights scale as the uplift rate^(1/n).
     double ratio = 1.0;
-    if (e.relief > 0 && e.steer) {
-      ratio = relief(z, g.fixed) / e.relief;
-      if (ratio > 0) e.rate /= std::pow(ratio, 0.5 * e.n);
+    if (e.relief > 0 && e.gain > 0) {
+      ratio = relief(z, g) / e.relief;
+      if (ratio > 0) e.rate /= std::pow(ratio, e.gain * e.n);
     }
-    previous = d.receiver;
-    if (until_converged && run.moved < kMovedChannels && (!e.steer || std::fabs(ratio - 1.0) < kReliefTolerance)) {
+    previous = d.to;
+    if (until_converged && run.moved < kMovedChannels && (!e.settle || std::fabs(ratio - 1.0) < kReliefTolerance)) {
       run.converged = true;
       break;
     }

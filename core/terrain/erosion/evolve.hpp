@@ -16,7 +16,8 @@ struct Evolution {
   double m = 0.5, n = 1.0;
   double rate = 1.0;       // a factor of every uplift rate
   double relief = 0.0;     // > 0: steer `rate` so that relief() stays at this
-  bool steer = false;      // steer on this grid (the coarsest; the finer ones keep its rate)
+  double gain = 0.5;       // how hard: rate /= (relief() / relief)^(gain·n) each step
+  bool settle = true;      // converged only once the relief is within 1 % of its aim
   double hillslope = 1.0;  // the hillslope length ℓ in finest cells: diffusion D = K·ℓ²
   double diffusion = 1.0;  // a factor of D
   double courant = 1.0;    // a step is this many cells² of creep on its grid
@@ -30,9 +31,9 @@ struct GridRun {
   double moved = 1.0;  // share of the channels whose receiver changed in the last step
 };
 
-// How high the free cells stand above the lowest fixed cell: their 99th
-// percentile (on a sample).
-double relief(const std::vector<double>& z, const std::vector<std::uint8_t>& fixed);
+// How high the free cells of g's raster (its margin aside) stand above its
+// lowest fixed cell: their 99th percentile (on a sample).
+double relief(const std::vector<double>& z, const ErosionGrid& g);
 
 // Steps on grid g from z (heights in finest cells): at most max_steps, fewer
 // when `until_converged` and the network and the relief stopped changing.

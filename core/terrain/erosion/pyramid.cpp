@@ -52,6 +52,7 @@ ErosionGrid coarser(const ErosionGrid& g) {
   ErosionGrid c;
   c.w = g.w / 2 + 1, c.h = g.h / 2 + 1;
   c.spacing = 2.0 * g.spacing;
+  c.margin = (g.margin + 1) / 2;
   const std::size_t n = static_cast<std::size_t>(c.w) * c.h;
   c.initial.resize(n), c.uplift.resize(n), c.fixed.assign(n, 0);
   for (int Y = 0; Y < c.h; ++Y)

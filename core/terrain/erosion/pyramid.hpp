@@ -17,6 +17,7 @@ constexpr int kCoarsestSide = 320;
 struct ErosionGrid {
   int w = 0, h = 0;
   double spacing = 1.0;             // cell side in finest-grid cells
+  int margin = 0;                   // cells of the margin around the raster (erode.cpp)
   std::vector<double> initial;      // the uneroded terrain, in finest-grid cells
   std::vector<double> uplift;       // relative uplift rate
   std::vector<std::uint8_t> fixed;  // 2: a constraint, 1: the border, 0: free

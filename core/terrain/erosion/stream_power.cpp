@@ -50,12 +50,12 @@ void stream_power_step(std::vector<double>& z, const std::vector<double>& uplift
     c[i] = 0.0;
     if (fixed[i]) continue;
     z[i] += uplift[i] * lift;
-    if (d.receiver[i] >= 0) c[i] = k * area_term(d.area[i], sp);
+    if (d.to[i] != kOutlet) c[i] = k * area_term(d.area[i], sp);
   }
   for (const std::int32_t i : d.order) {
     if (c[i] == 0.0) continue;
-    const std::int32_t r = d.receiver[i];
-    z[i] = implicit_height(z[i], z[r], c[i], step_length(i, r, d.w) * sp.spacing, sp.n);
+    const std::uint8_t to = d.to[i];
+    z[i] = implicit_height(z[i], z[i + d.offset[to]], c[i], step_length(to) * sp.spacing, sp.n);
   }
 }
 
@@ -69,12 +69,12 @@ double steady_state_erodibility(const std::vector<double>& target, const std::ve
   std::vector<double> rise(n, 0.0), anchor(n, 0.0), steady, wanted;
   steady.reserve(n), wanted.reserve(n);
   for (const std::int32_t i : d.order) {
-    const std::int32_t r = d.receiver[i];
+    const std::int32_t r = d.receiver(i);
     if (fixed[i] || r < 0) {
       anchor[i] = target[i];
       continue;
     }
-    const double length = step_length(i, r, d.w) * sp.spacing;
+    const double length = step_length(d.to[i]) * sp.spacing;
     rise[i] = rise[r] + std::pow(uplift[i] / area_term(d.area[i], sp), 1.0 / sp.n) * length;
     anchor[i] = anchor[r];
     steady.push_back(rise[i]);

@@ -142,18 +142,14 @@ TEST(Erosion, GrowsADrainageNetworkAndKeepsTheMountainsHeight) {
   // The largest basin draining through one cell (a trunk valley) grows.
   const std::vector<double> before = d8_area(start), after = d8_area(c);
   EXPECT_GT(*std::max_element(after.begin(), after.end()), 2.0 * *std::max_element(before.begin(), before.end()));
-  // The mountains keep their height (the 99th percentile), the valleys are
-  // cut: the mean falls.
+  // The mountains keep their height (the 99th percentile).
   const auto quantile = [](std::vector<double> v, double q) {
     std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(q * (v.size() - 1)), v.end());
     return v[static_cast<std::size_t>(q * (v.size() - 1))];
   };
   const double lo = *std::min_element(start.z.begin(), start.z.end());
   const double top0 = quantile(start.z, 0.99) - lo, top1 = quantile(c.z, 0.99) - lo;
-  EXPECT_NEAR(top1, top0, 0.15 * top0);
-  double m0 = 0.0, m1 = 0.0;
-  for (std::size_t i = 0; i < c.cells(); ++i) m0 += start.z[i], m1 += c.z[i];
-  EXPECT_LT(m1, m0);
+  EXPECT_NEAR(top1, top0, 0.1 * top0);
 }
 
 TEST(Erosion, ZeroStepsChangeNothing) {
