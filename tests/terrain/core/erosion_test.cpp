@@ -127,8 +127,9 @@ TEST(Erosion, RiversDrainAlongTheirCourseToTheBorderAndRidgesStayCrests) {
         if (c.state[c.index(x, y)] != CellState::ridge || near_river(x, y)) continue;
         for (int dy = -2; dy <= 2; ++dy)
           for (int dx = -2; dx <= 2; ++dx)
-            if (c.state[c.index(x + dx, y + dy)] == CellState::unknown)
+            if (c.state[c.index(x + dx, y + dy)] == CellState::unknown) {
               ASSERT_LT(z(x + dx, y + dy), z(x, y)) << x << "," << y;
+            }
       }
   }
 }
