@@ -52,7 +52,7 @@ KEPT_FRACTION = 0.033
 BLOB_COVER = 0.05
 PNG_MAX = 256
 
-VOID_KINDS = ("kept3", "blobs")
+VOID_KINDS = ("kept3", "blobs", "big")
 
 
 # --------------------------------------------------------------------------
@@ -291,7 +291,28 @@ def punch_blobs(shape, seed: int, cover: float = BLOB_COVER,
     return void
 
 
+def punch_big(shape, seed: int, valid: np.ndarray | None = None) -> np.ndarray:
+    """Void mask (True = removed): one smooth blob (as in punch_blobs) whose
+    base radius is an eighth of the raster's width (a void about a quarter
+    of the width across), placed at random wholly inside the raster, clear
+    of the border by 2 cells where it fits."""
+    rng = _rng(seed, "big")
+    h, w = shape
+    r = w / 8.0
+    p = _blob(rng, r)
+    m = p[5] + 2
+    cx = rng.uniform(min(m, w / 2), max(w - m, w / 2))
+    cy = rng.uniform(min(m, h / 2), max(h - m, h / 2))
+    void = np.zeros(shape, dtype=bool)
+    _raster_blob(void, cx, cy, r, p)
+    if valid is not None:
+        void &= valid
+    return void
+
+
 def punch(kind: str, shape, seed: int, valid: np.ndarray | None = None) -> np.ndarray:
+    if kind == "big":
+        return punch_big(shape, seed, valid=valid)
     if kind == "kept3":
         v = punch_kept3(shape, seed)
         if valid is not None:
