@@ -68,7 +68,9 @@ inline int coarser_extent(int fine) { return fine / 2 + 1; }
 enum class CoarsePin {
   position,      // fine cell (2i, 2j) is pinned: the true constraints of the coarse lattice
   neighbourhood, // any fine cell (2i+dx, 2j+dy), |dx|, |dy| <= 1, is pinned: a coarse
-                 // problem at least as stiff as the fine one (multigrid corrections)
+                 // problem at least as stiff as the fine one
+  soft,          // position, and the other fine pins as springs on the coarse cells
+                 // around them (multigrid corrections: multigrid.hpp)
 };
 
 // The next coarser lattice (coarser_extent of each side): cell (i, j) is fine

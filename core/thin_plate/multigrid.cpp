@@ -154,6 +154,37 @@ void add_correction(Lattice& fine, const Lattice& coarse, int threads) {
   }
 }
 
+// 4·Pᵀ v over every fine cell (pinned ones too), separably: along x into one
+// coarse row, then spread along y. For v = s on every cell it is 16·s.
+std::vector<double> restrict_all(const std::vector<double>& v, int fw, int fh, int cw, int ch) {
+  std::vector<double> out(static_cast<std::size_t>(cw) * ch, 0.0), row(static_cast<std::size_t>(cw));
+  for (int fy = 0; fy < fh; ++fy) {
+    std::fill(row.begin(), row.end(), 0.0);
+    restrict_span(v.data() + static_cast<std::size_t>(fy) * fw, 0, fw, 4.0, cw, row.data());
+    const Weights1D wy = cubic_weights_1d(fy, ch);
+    for (int j = 0; j < wy.count; ++j) {
+      double* o = out.data() + static_cast<std::size_t>(wy.first + j) * cw;
+      for (int c = 0; c < cw; ++c) o[c] += wy.w[j] * row[c];
+    }
+  }
+  return out;
+}
+
+// The next coarse lattice by CoarsePin::soft: pinned where its own position
+// is a constraint; every other cell held by springs of the lumped Galerkin
+// form 4·Σ_f P_fc·s_f, s_f = `pin` at the fine pinned cells and the fine
+// cell's own spring elsewhere (so the pull keeps its 16·s per level over
+// free cells, as with the other rules).
+Lattice soft_coarser_lattice(const Lattice& fine, double pin) {
+  Lattice c = coarser_lattice(fine, CoarsePin::position);
+  std::vector<double> s(fine.z.size());
+  for (std::size_t i = 0; i < s.size(); ++i)
+    s[i] = fine.pinned[i] ? pin : (fine.spring.empty() ? fine.spring_all : fine.spring[i]);
+  c.spring = restrict_all(s, fine.w, fine.h, c.w, c.h);
+  for (double& v : c.spring) v = std::max(v, 0.0);  // the cubic's negative taps at a border
+  return c;
+}
+
 }  // namespace
 
 Multigrid::Multigrid(const Lattice& finest, VCycleSchedule schedule) : schedule_(schedule) {
@@ -168,8 +199,12 @@ Multigrid::Multigrid(const Lattice& finest, VCycleSchedule schedule) : schedule_
     // unknown cell, 6.9 with it (docs/default-method.md, Multigrid). Read
     // before push_back, which may move the lattice `fine` points to.
     const double spring = fine->spring.empty() ? 16.0 * fine->spring_all : 0.0;
-    chain.push_back(coarser_lattice(*fine, schedule_.coarse_pin));
-    chain.back().spring_all = spring;
+    if (schedule_.coarse_pin == CoarsePin::soft) {
+      chain.push_back(soft_coarser_lattice(*fine, schedule_.soft_pin_spring));
+    } else {
+      chain.push_back(coarser_lattice(*fine, schedule_.coarse_pin));
+      chain.back().spring_all = spring;
+    }
     fine = &chain.back();
   }
   // chain was built fine to coarse; index it coarse to fine.

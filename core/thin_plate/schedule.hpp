@@ -27,11 +27,11 @@ struct ThinPlateSchedule {
   // A large field whose every free cell lies near a constraint (scattered
   // samples such as 3 % kept cells: one void network of millions of cells,
   // none far from data) stops at this looser tolerance: 3 iterations where
-  // converging takes 9 and 1e-1 took 4. The cascade already holds such a
-  // fill to within the terrain's own detail; each iteration saved is about
-  // a seventh of a 3.3 %-kept fill's time, for about 0.5 % of its RMSE
+  // converging to 1e-2 takes 6. The cascade already holds such a fill to
+  // within the terrain's own detail; each iteration saved is about a seventh
+  // of a 3.3 %-kept fill's time, for a few tenths of a percent of its RMSE
   // (docs/default-method.md). 0: never.
-  double shallow_pcg_tol = 0.15;
+  double shallow_pcg_tol = 0.1;
   double shallow_reach = 16.0;               // "near": at most this many cells from a constraint
   std::size_t shallow_min_free = 1u << 14;   // "large": at least this many free cells
   // Soft pull of the finest level's free cells towards the cascade's fill:

@@ -301,7 +301,9 @@ void smooth_fill(const FieldView& field, const Displacement* added, const ThinPl
   Lattice cropped = whole ? Lattice{} : crop(levels[finest], box);
   Lattice& fine = whole ? levels[finest] : cropped;
   if (schedule.pull_length > 0) attach_pull(fine, schedule.pull_length);
-  Multigrid mg(fine, schedule.vcycle);
+  VCycleSchedule cycles = schedule.vcycle;
+  if (schedule.pcg_tol <= 0) cycles.coarse_pin = CoarsePin::neighbourhood;  // soft corrections overshoot alone
+  Multigrid mg(fine, cycles);
   if (schedule.pcg_tol > 0) {
     mg.solve_pcg(fine, pcg_tolerance(fine, field.farthest, schedule), schedule.pcg_max_iterations,
                  sub_progress(progress, 0.4, 0.8));
