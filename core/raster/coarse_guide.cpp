@@ -170,11 +170,11 @@ void CoarseGuide::close_row(int j) {
 // huge void does not put its neighbours under tension.
 constexpr double kSlopeReach = 8.0;         // raster cells
 constexpr double kFarVoidCells = 128.0;     // beyond: the guide's surface deep inside, tiles
-constexpr double kTensionFrom = 64.0;       // farthest void cell from data: no tension below
-constexpr double kTensionFull = 256.0;      // full tension above
+constexpr double kTensionFrom = 32.0;       // farthest void cell from data: no tension below
+constexpr double kTensionFull = 96.0;       // full tension above (docs/tiling.md: the ramp)
 // The tensioned surface costs more than the plain one (a padded lattice) and,
 // on a small raster, the time its largest field waits for the guide: a void
-// that would take less than 1 % of it (farthest cell within ~9 cells of
+// that would take less than 1 % of it (farthest cell within ~4 cells of
 // kTensionFrom) keeps the plain surface.
 constexpr double kMinTensionWeight = 0.01;
 

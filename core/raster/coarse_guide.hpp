@@ -38,8 +38,8 @@ constexpr double kGuideRadiusStrides = 8.0;
 bool reaches_far(double farthest);
 
 // How much of the guide's tensioned surface a void whose farthest cell lies
-// `farthest` raster cells from data takes: 0 up to 64 cells, ramping to 1
-// at 256 (docs/tiling.md, the coarse guide); a weight below 1 % is 0.
+// `farthest` raster cells from data takes: 0 up to 32 cells, ramping to 1
+// at 96 (docs/tiling.md, the coarse guide); a weight below 1 % is 0.
 double far_void_weight(double farthest);
 
 // Lattice points [x0, x1) × [y0, y1).

@@ -37,14 +37,14 @@ struct Raster {
   }
 };
 
-TEST(CoarseGuide, FarVoidWeightRampsBetween64And256Cells) {
+TEST(CoarseGuide, FarVoidWeightRampsBetween32And96Cells) {
   EXPECT_EQ(mcmd::far_void_weight(10.0), 0.0);
-  EXPECT_EQ(mcmd::far_void_weight(64.0), 0.0);
-  EXPECT_EQ(mcmd::far_void_weight(72.0), 0.0);  // under 1 %: not worth the tensioned solve
-  EXPECT_GE(mcmd::far_void_weight(76.0), 0.01);
-  EXPECT_GT(mcmd::far_void_weight(100.0), 0.0);
-  EXPECT_LT(mcmd::far_void_weight(200.0), 1.0);
-  EXPECT_EQ(mcmd::far_void_weight(256.0), 1.0);
+  EXPECT_EQ(mcmd::far_void_weight(32.0), 0.0);
+  EXPECT_EQ(mcmd::far_void_weight(35.0), 0.0);  // under 1 %: not worth the tensioned solve
+  EXPECT_GE(mcmd::far_void_weight(37.0), 0.01);
+  EXPECT_GT(mcmd::far_void_weight(50.0), 0.0);
+  EXPECT_LT(mcmd::far_void_weight(90.0), 1.0);
+  EXPECT_EQ(mcmd::far_void_weight(96.0), 1.0);
   EXPECT_FALSE(mcmd::reaches_far(128.0));
   EXPECT_TRUE(mcmd::reaches_far(129.0));
 }
