@@ -346,17 +346,10 @@ double noise_laplacian_variance(double H, int octaves) {
   return sum;
 }
 
-// The octaves -rs auto makes for a field whose target cells all lie within
-// `depth` cells of a constraint (< 0: not known): those of spacing up to the
-// depth. A coarser octave is smooth across every void of the field, and the
-// conditioning on the constraints around it takes it out again (scattered
-// samples: 3 % kept cells lie within ~16 cells, spacings 16 and 32 go). On the
-// 42 benchmark cases RMSE median 0.9069 -> 0.9054 (kept3 0.8430 -> 0.8410),
-// Laplacian spread 0.967 unchanged; White Mountains kept3 s2 684 -> 594 ms CPU.
 int auto_octaves(double depth) {
-  if (depth < 0) return kOctaves;
+  if (depth < 0) return kAutoOctaves;
   int n = 1;
-  while (n < kOctaves && std::ldexp(1.0, n) <= depth) ++n;
+  while (n < kAutoOctaves && std::ldexp(1.0, n) <= depth) ++n;
   return n;
 }
 
