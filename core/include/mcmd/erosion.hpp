@@ -12,9 +12,11 @@
 //     steeper than the angle of repose fail (talus).
 // It runs coarse to fine: the network converges on a coarse grid, then each
 // finer grid starts from the coarser result plus the initial terrain's own
-// finer detail and needs a few steps only.
-// Constraint cells (sketch, ridge, river cells) and the raster's border (the
-// outlets) never change; water runs over them.
+// finer detail and needs a few steps only; within a mirrored margin whose
+// border is the outlet. Constraint cells never change: sketch and point
+// cells are held (water runs over them); ridge cells are divides and river
+// cells carve their valleys, both warped back to their heights at the end,
+// rivers still draining along their course and ridges still crests.
 #pragma once
 
 #include <vector>
@@ -32,7 +34,7 @@ enum class UpliftPattern {
 };
 
 struct ErosionParams {
-  int steps = 0;            // time steps on the finest grid; 0: no erosion; kErodeAuto: until converged
+  int steps = 0;            // time steps on the finest grid; 0: no erosion; kErodeAuto: the network converged
   double K = 0.0;           // erodibility; 0: automatic, the steady state keeps the terrain's relief
   double m = 0.5, n = 1.0;  // the stream-power exponents (m/n: the channels' concavity)
   UpliftPattern uplift = UpliftPattern::terrain;
@@ -50,7 +52,7 @@ struct ErosionReport {
   int grids = 0;           // grids of the coarse-to-fine pyramid
   int steps = 0;           // steps on the finest grid
   int coarse_steps = 0;    // steps on the coarser grids
-  bool converged = false;  // the finest grid's network stopped changing
+  bool converged = false;  // the coarsest grid's network (the valleys' layout) stopped changing
   double moved = 1.0;      // share of the finest grid's receivers that changed in its last step
   double K = 0.0;          // the erodibility used
 };

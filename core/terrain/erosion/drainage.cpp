@@ -72,9 +72,13 @@ void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector
     for (int x = 0; x < w; ++x) {
       const std::int32_t i = y * w + x;
       int count = 0;
-      for (int k = 0; k < 8; ++k) {
-        const int nx = x + kDx[k], ny = y + kDy[k];
-        if (nx > 0 && ny > 0 && nx < w - 1 && ny < h - 1) count += d.lower[i + off[k]] >> ((k + 4) & 7) & 1u;
+      if (x > 0 && y > 0 && x < w - 1 && y < h - 1) {  // its neighbours are in the raster (the border's lower is 0)
+        for (int k = 0; k < 8; ++k) count += d.lower[i + off[k]] >> ((k + 4) & 7) & 1u;
+      } else {
+        for (int k = 0; k < 8; ++k) {
+          const int nx = x + kDx[k], ny = y + kDy[k];
+          if (nx > 0 && ny > 0 && nx < w - 1 && ny < h - 1) count += d.lower[i + off[k]] >> ((k + 4) & 7) & 1u;
+        }
       }
       higher[i] = static_cast<std::uint8_t>(count);
     }

@@ -37,16 +37,14 @@ double relief(const std::vector<double>& z, const ErosionGrid& g) {
   // stride: the mountains keep their height, the valleys are cut into them.
   const std::size_t stride = std::max<std::size_t>(1, z.size() >> 16);
   double lo = HUGE_VAL;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (g.fixed[i]) lo = std::min(lo, z[i]);
   std::vector<double> v;
   v.reserve(z.size() / stride + 1);
-  for (std::size_t i = 0; i < z.size(); ++i) {
-    if (g.fixed[i]) {
-      lo = std::min(lo, z[i]);
-      continue;
-    }
+  for (std::size_t i = 0; i < z.size(); i += stride) {
     const int x = static_cast<int>(i % g.w), y = static_cast<int>(i / g.w);
     const bool inside = x >= g.margin && y >= g.margin && x < g.w - g.margin && y < g.h - g.margin;
-    if (inside && i % stride == 0) v.push_back(z[i]);
+    if (inside && !g.fixed[i]) v.push_back(z[i]);
   }
   if (v.empty() || lo == HUGE_VAL) return 0.0;
   const auto k = v.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(v.size() - 1));
