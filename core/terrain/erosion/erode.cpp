@@ -9,6 +9,7 @@
 #include "morphology/flow.hpp"
 #include "terrain/erosion/evolve.hpp"
 #include "terrain/erosion/line_guard.hpp"
+#include "terrain/erosion/margin.hpp"
 #include "terrain/erosion/pyramid.hpp"
 #include "thin_plate/thin_plate.hpp"
 
@@ -35,9 +36,6 @@ constexpr double kFinestCourant = 3.0;
 // The drainage area each river cell brings, in finest cells: a river of a
 // few hundred cells drains like a trunk valley of its raster.
 constexpr double kRiverSource = 100.0;
-// The margin eroded around the raster, in cells (a quarter of a small
-// raster's side at most).
-constexpr int kMargin = 32;
 
 [[noreturn]] void bad(const std::string& why) { throw std::invalid_argument(why); }
 
@@ -165,37 +163,6 @@ void check_erosion(const ErosionParams& p, int w, int h) {
 
 namespace {
 
-// The cells of a margin around the raster, its own cells mirrored (the
-// edge not repeated), all free: the outlets are fixed at the margin's
-// border, whose lip (the land eroded below its fixed height) stays there.
-int margin_of(int w, int h) { return std::min(kMargin, std::min(w, h) / 4); }
-
-int mirrored(int v, int n) {
-  if (v < 0) v = -v;
-  if (v >= n) v = 2 * (n - 1) - v;
-  return v;
-}
-
-Canvas with_margin(const Canvas& c, int m) {
-  Canvas big(c.w + 2 * m, c.h + 2 * m);
-  for (int y = 0; y < big.h; ++y)
-    for (int x = 0; x < big.w; ++x) {
-      const int ox = x - m, oy = y - m;
-      big.z[big.index(x, y)] = c.z[c.index(mirrored(ox, c.w), mirrored(oy, c.h))];
-      if (c.contains(ox, oy)) big.state[big.index(x, y)] = c.state[c.index(ox, oy)];
-    }
-  return big;
-}
-
-std::vector<double> map_with_margin(const std::vector<double>& f, int w, int h, int m) {
-  std::vector<double> out(static_cast<std::size_t>(w + 2 * m) * (h + 2 * m));
-  for (int y = 0; y < h + 2 * m; ++y)
-    for (int x = 0; x < w + 2 * m; ++x)
-      out[static_cast<std::size_t>(y) * (w + 2 * m) + x] =
-          f[static_cast<std::size_t>(mirrored(y - m, h)) * w + mirrored(x - m, w)];
-  return out;
-}
-
 // erode() on a canvas that already has its margin of `margin` cells.
 ErosionReport erode_all(Canvas& canvas, int margin, const ErosionParams& p, const ProgressFn& progress) {
   ErosionReport out;
@@ -257,13 +224,12 @@ ErosionReport erode(Canvas& canvas, const ErosionParams& p, const ProgressFn& pr
     report(progress, 1.0);
     return {};
   }
-  const int m = margin_of(canvas.w, canvas.h);
-  Canvas big = with_margin(canvas, m);
+  const int m = terrain::margin_of(canvas.w, canvas.h);
+  Canvas big = terrain::with_margin(canvas, m);
   ErosionParams q = p;
-  if (p.uplift == UpliftPattern::map) q.uplift_map = map_with_margin(p.uplift_map, canvas.w, canvas.h, m);
+  if (p.uplift == UpliftPattern::map) q.uplift_map = terrain::with_margin(p.uplift_map, canvas.w, canvas.h, m);
   const ErosionReport out = erode_all(big, m, q, progress);
-  for (int y = 0; y < canvas.h; ++y)
-    for (int x = 0; x < canvas.w; ++x) canvas.z[canvas.index(x, y)] = big.z[big.index(x + m, y + m)];
+  terrain::without_margin(big, m, canvas);
   report(progress, 1.0);
   return out;
 }
