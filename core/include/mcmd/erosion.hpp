@@ -42,7 +42,7 @@ struct ErosionParams {
   double diffusion = 1.0;   // hillslope diffusion, a factor of the default (0: none)
   double talus = 90.0;      // angle of repose in degrees, in (0, 90]; 90: none
   double cell_size = 30.0;  // a cell's side in elevation units (slopes and the talus angle need it)
-  int threads = 1;          // the result does not depend on it
+  int threads = 1;          // for the warp back of the drawn lines (the steps run on one); the result does not depend on it
 };
 
 constexpr int kErodeAuto = -1;
