@@ -25,7 +25,7 @@ std::vector<double> fbm_relief(int w, int h, std::uint64_t seed, double H, doubl
   const Area area{0, 0, w, h};
   const std::vector<std::uint8_t> everywhere(area.cells(), 1);
   std::vector<double> relief(area.cells(), 0.0);
-  const Amplitude scale{amplitude * std::exp2(-(scale_octaves - 1) * H)};
+  const Amplitude scale{amplitude * std::exp2(-(scale_octaves - 1) * H), nullptr, {}};
   add_noise(field, area, blocks, everywhere, seed, H, octaves, scale, relief, threads);
   return relief;
 }
