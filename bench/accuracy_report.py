@@ -103,8 +103,8 @@ def summaries(a, L, truth, mlist, results):
         L.append(f"## Summary — {kind} (medians over {len(kc)} cases)")
         L.append("")
         L.append("| method | cases ok | RMSE m | RMSE /gdal | worst RMSE /gdal | max err /gdal "
-                 "| lap | slope | time s | time /gdal | worst time /gdal | RSS MB |")
-        L.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
+                 "| lap | slope | time s | CPU s | time /gdal | worst time /gdal | RSS MB |")
+        L.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         for m in mlist:
             rs = [results.get((c[0], m)) for c in kc]
             refs = [results.get((c[0], REF)) for c in kc]
@@ -122,6 +122,7 @@ def summaries(a, L, truth, mlist, results):
                 V.fmt(V.median([r.get("lap_ratio") for r in good]), ".2f"),
                 V.fmt(V.median([r.get("slope_ratio") for r in good]), ".2f"),
                 V.fmt(V.median([r.get("wall_s") for r in good]), ".2f"),
+                V.fmt(V.median([r.get("cpu_s") for r in good]), ".2f"),
                 V.fmt(V.median(tr), ".2f"), V.fmt(wt, ".2f"),
                 V.fmt(V.median([r.get("rss_mb") for r in good]), ".0f")]) + " |")
         L.append("")
@@ -129,10 +130,11 @@ def summaries(a, L, truth, mlist, results):
 
 def wins(a, L, truth, mlist, results):
     """Per void kind, how many cases each tool fills best (lowest RMSE of all
-    rows; paper methods and -rs auto count as rows too)."""
+    rows; paper methods and -rs auto count as rows too), over the cases every
+    row ran on (the peers may have run on fewer)."""
     rows = []
     for kind in a.kinds:
-        kc = kind_cases(truth, kind)
+        kc = [c for c in kind_cases(truth, kind) if all(results.get((c[0], m)) for m in mlist)]
         if not kc:
             continue
         count = {m: 0 for m in mlist}
@@ -147,7 +149,8 @@ def wins(a, L, truth, mlist, results):
         rows.append((kind, len(kc), count))
     if not rows:
         return
-    L.append("## Who fills best (cases with the lowest RMSE of all rows)")
+    L.append("## Who fills best (cases with the lowest RMSE of all rows, over the cases "
+             "every row ran on)")
     L.append("")
     L.append("| kind | cases | " + " | ".join(LABEL[m] for m in mlist) + " |")
     L.append("|---|---|" + "---|" * len(mlist))
@@ -229,13 +232,14 @@ def gallery(L, pngs, rel):
 def all_runs(L, cases, mlist, results):
     L.append("## All runs")
     L.append("")
-    L.append("| case | method | RMSE | max err | bias | lap | slope | filled % | time s | RSS MB | status |")
-    L.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    L.append("| case | method | RMSE | max err | bias | lap | slope | filled % | time s | CPU s | RSS MB "
+             "| status |")
+    L.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for c in cases:
         for m in mlist:
             r = results.get((c[0], m))
             if not r:
-                L.append(f"| {c[0]} | {LABEL[m]} | | | | | | | | | not run |")
+                L.append(f"| {c[0]} | {LABEL[m]} | | | | | | | | | | not run |")
                 continue
             st = "ok" if r.get("ok") else r.get("error", "failed").replace("|", "/")[:80]
             if r.get("ok") and r.get("known_exact") is False:
@@ -246,7 +250,8 @@ def all_runs(L, cases, mlist, results):
                 V.fmt(r.get("bias"), ".2f"), V.fmt(r.get("lap_ratio"), ".3f"),
                 V.fmt(r.get("slope_ratio"), ".3f"),
                 V.fmt(100 * comp if comp is not None else None, ".2f"),
-                V.fmt(r.get("wall_s"), ".2f"), V.fmt(r.get("rss_mb"), ".0f"), st]) + " |")
+                V.fmt(r.get("wall_s"), ".2f"), V.fmt(r.get("cpu_s"), ".2f"),
+                V.fmt(r.get("rss_mb"), ".0f"), st]) + " |")
     L.append("")
 
 
