@@ -131,11 +131,12 @@ Erosion (landscape evolution that grows valleys into the terrain; on for
 -skeleton, from-scratch and line terrains, off for a sketch, -peaks and
 -point; constraint cells never change, rivers keep draining along their
 course):
-  -erode STEPS|auto|0  Steps on the finest grid (default auto: until the
-                   network converges; 0: none). Coarser grids run first.
+  -erode STEPS|auto|0  Steps on the finest grid (default auto: 8, after the
+                   coarser grids' network has converged; 0: none).
   -erosion K,m,n   Stream-power law E = K A^m S^n: K > 0 or auto (default:
-                   the uneroded terrain's mean height is kept), m in [0, 2],
-                   n in [0.5, 4] (default auto,0.5,1): -erosion auto,0.45,1.
+                   the uneroded terrain's relief, its 99th percentile, is
+                   kept), m in [0, 2], n in [0.5, 4] (default auto,0.5,1):
+                   -erosion auto,0.45,1.
   -uplift terrain|uniform|FILE  Where the land rises: with the uneroded
                    terrain's height (default: its mountains stay), the same
                    everywhere, or a raster of the terrain's size of relative
