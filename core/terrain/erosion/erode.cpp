@@ -39,8 +39,6 @@ constexpr double kRiverSource = 100.0;
 
 [[noreturn]] void bad(const std::string& why) { throw std::invalid_argument(why); }
 
-bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
-
 // The finest grid: heights in cells; the border fixed as the outlets, the
 // sketch and point cells held. The drawn lines erode with the land, and are
 // warped back at the end: held at their heights, the land beside a ridge
@@ -58,7 +56,7 @@ ErosionGrid finest(const Canvas& c, const ErosionParams& p) {
       g.initial[i] = c.z[i] / p.cell_size;
       const CellState s = c.state[i];
       const bool line = s == CellState::ridge || s == CellState::river;
-      g.fixed[i] = is_constraint(s) && !line ? 2 : on_border(x, y, c.w, c.h) ? 1 : 0;
+      g.fixed[i] = is_constraint(s) && !line ? 2 : terrain::on_border(x, y, c.w, c.h) ? 1 : 0;
       if (s == CellState::ridge) {
         if (g.guides.divide.empty()) g.guides.divide.assign(c.cells(), 0);
         g.guides.divide[i] = 1;
@@ -114,9 +112,7 @@ std::vector<double> refine(const std::vector<double>& z, const ErosionGrid& coar
 void hold_relief(std::vector<double>& z, const ErosionGrid& g, double aim) {
   const double now = terrain::relief(z, g);
   if (!(now > 0)) return;
-  double lo = HUGE_VAL;
-  for (std::size_t i = 0; i < z.size(); ++i)
-    if (g.fixed[i]) lo = std::min(lo, z[i]);
+  const double lo = terrain::lowest_fixed(z, g);
   const double stretch = aim / now;
   for (std::size_t i = 0; i < z.size(); ++i)
     if (!g.fixed[i]) z[i] = lo + (z[i] - lo) * stretch;

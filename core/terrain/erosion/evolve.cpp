@@ -31,14 +31,19 @@ double moved_share(const std::vector<std::uint8_t>& before, const Drainage& d, d
 
 }  // namespace
 
+double lowest_fixed(const std::vector<double>& z, const ErosionGrid& g) {
+  double lo = HUGE_VAL;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (g.fixed[i]) lo = std::min(lo, z[i]);
+  return lo;
+}
+
 double relief(const std::vector<double>& z, const ErosionGrid& g) {
   // Its 99th percentile over the raster's own cells (not the margin, whose
   // outlets hold a lip), on a sample of about 2^16 of them at a fixed
   // stride: the mountains keep their height, the valleys are cut into them.
   const std::size_t stride = std::max<std::size_t>(1, z.size() >> 16);
-  double lo = HUGE_VAL;
-  for (std::size_t i = 0; i < z.size(); ++i)
-    if (g.fixed[i]) lo = std::min(lo, z[i]);
+  const double lo = lowest_fixed(z, g);
   std::vector<double> v;
   v.reserve(z.size() / stride + 1);
   for (std::size_t i = 0; i < z.size(); i += stride) {

@@ -31,6 +31,9 @@ struct GridRun {
   double moved = 1.0;  // share of the channels whose receiver changed in the last step
 };
 
+// The lowest of z's fixed cells (the base level), HUGE_VAL without any.
+double lowest_fixed(const std::vector<double>& z, const ErosionGrid& g);
+
 // How high the free cells of g's raster (its margin aside) stand above its
 // lowest fixed cell: their 99th percentile (on a sample).
 double relief(const std::vector<double>& z, const ErosionGrid& g);

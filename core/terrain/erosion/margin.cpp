@@ -19,17 +19,6 @@ int mirrored(int v, int n) {
 
 int margin_of(int w, int h) { return std::min(kMargin, std::min(w, h) / 4); }
 
-Canvas with_margin(const Canvas& c, int m) {
-  Canvas big(c.w + 2 * m, c.h + 2 * m);
-  for (int y = 0; y < big.h; ++y)
-    for (int x = 0; x < big.w; ++x) {
-      const int ox = x - m, oy = y - m;
-      big.z[big.index(x, y)] = c.z[c.index(mirrored(ox, c.w), mirrored(oy, c.h))];
-      if (c.contains(ox, oy)) big.state[big.index(x, y)] = c.state[c.index(ox, oy)];
-    }
-  return big;
-}
-
 std::vector<double> with_margin(const std::vector<double>& f, int w, int h, int m) {
   const int bw = w + 2 * m, bh = h + 2 * m;
   std::vector<double> out(static_cast<std::size_t>(bw) * bh);
@@ -37,6 +26,14 @@ std::vector<double> with_margin(const std::vector<double>& f, int w, int h, int 
     for (int x = 0; x < bw; ++x)
       out[static_cast<std::size_t>(y) * bw + x] = f[static_cast<std::size_t>(mirrored(y - m, h)) * w + mirrored(x - m, w)];
   return out;
+}
+
+Canvas with_margin(const Canvas& c, int m) {
+  Canvas big(c.w + 2 * m, c.h + 2 * m);
+  big.z = with_margin(c.z, c.w, c.h, m);
+  for (int y = 0; y < c.h; ++y)
+    for (int x = 0; x < c.w; ++x) big.state[big.index(x + m, y + m)] = c.state[c.index(x, y)];
+  return big;
 }
 
 void without_margin(const Canvas& big, int m, Canvas& c) {

@@ -19,8 +19,6 @@ double restricted(const std::vector<double>& f, int w, int h, int X, int Y) {
   return sum;
 }
 
-bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
-
 // The mean height of the fixed interior cells of g under coarse cell (X, Y);
 // false when there is none.
 bool fixed_below(const ErosionGrid& g, int X, int Y, double& mean) {

@@ -14,6 +14,9 @@ namespace mcmd::terrain {
 
 constexpr int kCoarsestSide = 320;
 
+// Whether (x, y) lies on the border of a w×h grid: the outlets.
+inline bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
+
 struct ErosionGrid {
   int w = 0, h = 0;
   double spacing = 1.0;             // cell side in finest-grid cells
