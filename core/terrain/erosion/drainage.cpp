@@ -31,11 +31,30 @@ bool on_border(std::int32_t i, int w, int h) {
   return x == 0 || y == 0 || x == w - 1 || y == h - 1;
 }
 
-// Where each interior cell sends its water (d.lower, d.to), row by
-// row on `threads`, then each cell's count of the cells sending it water
-// (for the order), gathered from its neighbours' masks.
-void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector<std::uint8_t>& higher,
-               int threads) {
+// The set bits of an 8-bit mask (std::popcount is a library call without
+// the POPCNT instruction, which the portable build does not assume).
+unsigned bits_set(unsigned m) {
+  m = m - ((m >> 1) & 0x55u);
+  m = (m & 0x33u) + ((m >> 2) & 0x33u);
+  return (m + (m >> 4)) & 0x0Fu;
+}
+
+// The directions that stay off the border from an interior cell at x, y
+// (the border sends no water).
+unsigned inside_directions(int x, int y, int w, int h) {
+  unsigned m = 0xFFu;
+  if (x == 1) m &= ~0b0011'1000u;      // west: 3, 4, 5
+  if (x == w - 2) m &= ~0b1000'0011u;  // east: 7, 0, 1
+  if (y == 1) m &= ~0b1110'0000u;      // north: 5, 6, 7
+  if (y == h - 2) m &= ~0b0000'1110u;  // south: 1, 2, 3
+  return m;
+}
+
+// Where each interior cell sends its water (d.lower, d.to), and how many
+// cells send water to each (`higher`, for the order). Without divides a
+// cell's senders are its higher interior neighbours, counted with its own
+// slopes; with them, the counts are scattered from each sender.
+void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector<std::uint8_t>& higher) {
   const int w = d.w, h = d.h;
   const auto& off = d.offset;
   const std::size_t n = d.level.size();
@@ -43,42 +62,53 @@ void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector
   d.lower.assign(n, 0);
   higher.assign(n, 0);
   const bool divides = !divide.empty();
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (int y = 1; y < h - 1; ++y)
     for (int x = 1; x < w - 1; ++x) {
       const std::int32_t i = y * w + x;
       const double zi = d.level[i];
-      unsigned mask = 0, open = 0;  // lower neighbours, and those that are not divides
+      double s[8];
+      unsigned mask = 0, above = 0;  // lower and higher neighbours
+      for (int k = 0; k < 8; ++k) {
+        s[k] = (zi - d.level[i + off[k]]) * kInverseLength[k];
+        mask |= static_cast<unsigned>(s[k] > 0) << k;
+        above |= static_cast<unsigned>(s[k] < 0) << k;
+      }
       double steepest = 0.0;
       std::uint8_t to = kOutlet;
-      for (int k = 0; k < 8; ++k) {
-        const double s = (zi - d.level[i + off[k]]) * kInverseLength[k];
-        if (s > 0) {
-          mask |= 1u << k;
-          if (!divides || !divide[i + off[k]]) {
-            if (!open || s > steepest) steepest = s, to = static_cast<std::uint8_t>(k);
-            open |= 1u << k;
-          } else if (!open && s > steepest) {
-            steepest = s, to = static_cast<std::uint8_t>(k);
-          }
+      if (!divides) {
+        for (int k = 0; k < 8; ++k)
+          if (s[k] > steepest) steepest = s[k], to = static_cast<std::uint8_t>(k);
+        d.lower[i] = static_cast<std::uint8_t>(mask);
+        d.to[i] = to;
+        higher[i] = static_cast<std::uint8_t>(bits_set(above & inside_directions(x, y, w, h)));
+        continue;
+      }
+      // The steepest of the lower neighbours that are not divides, if any.
+      unsigned open = 0;
+      for (unsigned b = mask; b; b &= b - 1) {
+        const int k = std::countr_zero(b);
+        if (!divide[i + off[k]]) {
+          if (!open || s[k] > steepest) steepest = s[k], to = static_cast<std::uint8_t>(k);
+          open |= 1u << k;
+        } else if (!open && s[k] > steepest) {
+          steepest = s[k], to = static_cast<std::uint8_t>(k);
         }
       }
-      d.lower[i] = static_cast<std::uint8_t>(open ? open : mask);
+      const unsigned lower = open ? open : mask;
+      d.lower[i] = static_cast<std::uint8_t>(lower);
       d.to[i] = to;
+      for (unsigned b = lower; b; b &= b - 1) ++higher[i + off[std::countr_zero(b)]];
     }
-  // Neighbour k of cell i is i + off[k]; it sends to i when its bit (k + 4) % 8 is set.
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  if (divides) return;
+  // The border: its interior neighbours that send to it (neighbour k of
+  // cell i sends to i when its bit (k + 4) % 8 is set).
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
+    for (int x = 0; x < w; x += (y == 0 || y == h - 1) ? 1 : w - 1) {
       const std::int32_t i = y * w + x;
       int count = 0;
-      if (x > 0 && y > 0 && x < w - 1 && y < h - 1) {  // its neighbours are in the raster (the border's lower is 0)
-        for (int k = 0; k < 8; ++k) count += d.lower[i + off[k]] >> ((k + 4) & 7) & 1u;
-      } else {
-        for (int k = 0; k < 8; ++k) {
-          const int nx = x + kDx[k], ny = y + kDy[k];
-          if (nx > 0 && ny > 0 && nx < w - 1 && ny < h - 1) count += d.lower[i + off[k]] >> ((k + 4) & 7) & 1u;
-        }
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + kDx[k], ny = y + kDy[k];
+        if (nx > 0 && ny > 0 && nx < w - 1 && ny < h - 1) count += d.lower[i + off[k]] >> ((k + 4) & 7) & 1u;
       }
       higher[i] = static_cast<std::uint8_t>(count);
     }
@@ -115,25 +145,26 @@ void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std
       if (!mask) continue;  // the border (every interior cell has a lower neighbour)
       const double zi = d.level[i];
       double total = 0.0;
-      for (int j = 0; j < 8; ++j) {
+      for (unsigned b = mask; b; b &= b - 1) {
+        const int j = std::countr_zero(b);
         const double slope = (zi - d.level[i + off[j]]) * kInverseLength[j];
-        share[j] = mask >> j & 1u ? slope * slope * kContour[j] : 0.0;
+        share[j] = slope * slope * kContour[j];
         total += share[j];
       }
       const double a = d.area[i] / total;  // total > 0: an interior cell has a lower neighbour
-      for (int j = 0; j < 8; ++j)
-        if (share[j] > 0) {
-          const std::int32_t t = i + off[j];
-          d.area[t] += static_cast<float>(a * share[j]);
-          if (--higher[t] == 0) stack.push_back(t);
-        }
+      for (unsigned b = mask; b; b &= b - 1) {
+        const int j = std::countr_zero(b);
+        const std::int32_t t = i + off[j];
+        d.area[t] += static_cast<float>(a * share[j]);
+        if (--higher[t] == 0) stack.push_back(t);
+      }
     }
   }
   std::reverse(d.order.begin(), d.order.end());
 }
 
 void route(Drainage& d, const WaterGuides& guides, DrainageScratch& s) {
-  receivers(d, guides.divide, s.count, s.threads);
+  receivers(d, guides.divide, s.count);
   spread_area(d, guides.source, s.count, s.stack);
 }
 
@@ -141,6 +172,7 @@ void route(Drainage& d, const WaterGuides& guides, DrainageScratch& s) {
 
 void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides, int w, int h,
            Drainage& d, DrainageScratch& s) {
+  constexpr std::uint8_t kBorder = 2;  // marked, and on the border
   const std::size_t n = z.size();
   d.w = w, d.h = h;
   d.offset = offsets(w);
@@ -148,12 +180,12 @@ void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const
   s.mark.assign(n, 0);
   s.heap.clear();
   for (std::int32_t i = 0; i < static_cast<std::int32_t>(n); ++i)
-    if (on_border(i, w, h)) s.mark[i] = 1, d.level[i] = z[i], s.heap.push(z[i], i);
+    if (on_border(i, w, h)) s.mark[i] = kBorder, d.level[i] = z[i], s.heap.push(z[i], i);
   const auto& off = d.offset;
   while (!s.heap.empty()) {
     const auto [lv, i] = s.heap.pop();
     const double above = next_above(lv);
-    const bool edge = on_border(i, w, h);  // its neighbours need bounds tests
+    const bool edge = s.mark[i] == kBorder;  // its neighbours need bounds tests
     for (int k = 0; k < 8; ++k) {
       if (edge) {
         const int x = i % w + kDx[k], y = i / w + kDy[k];

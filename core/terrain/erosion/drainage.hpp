@@ -48,7 +48,6 @@ struct DrainageScratch {
   std::vector<std::uint8_t> mark;
   std::vector<std::uint8_t> count;
   std::vector<std::int32_t> stack;
-  int threads = 1;  // for the row passes; the result does not depend on it
 };
 
 // Fill every depression of z (Priority-Flood with ε from the border: each

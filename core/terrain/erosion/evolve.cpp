@@ -63,9 +63,7 @@ GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int m
   StreamPower sp{e.K, e.m, e.n, g.spacing};
   Drainage d;
   DrainageScratch scratch;
-  scratch.threads = e.threads;
   std::vector<std::uint8_t> previous;
-  std::vector<double> factors;
   for (int s = 0; s < max_steps; ++s) {
     report(progress, static_cast<double>(s) / max_steps);
     if (s == 0) flood(z, g.fixed, g.guides, g.w, g.h, d, scratch);
@@ -75,7 +73,7 @@ GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int m
     // A step of `courant` cells² of diffusion on this grid: D·dt = courant·spacing².
     const double ell = std::max(e.hillslope, kGridHillslope * g.spacing);
     const double dt = e.courant * g.spacing * g.spacing / (sp.K * ell * ell);
-    stream_power_step(z, g.uplift, e.rate, g.fixed, d, sp, dt, factors, e.threads);
+    stream_power_step(z, g.uplift, e.rate, g.fixed, d, sp, dt);
     diffuse(z, g.fixed, g.w, g.h, e.courant * e.diffusion, e.threads);
     if (e.talus > 0) limit_slopes(z, g.fixed, g.w, g.h, e.talus * g.spacing);
     ++run.steps;

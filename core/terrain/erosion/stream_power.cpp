@@ -38,24 +38,17 @@ double implicit_height(double b, double zr, double c, double length, double n) {
 }  // namespace
 
 void stream_power_step(std::vector<double>& z, const std::vector<double>& uplift, double rate,
-                       const std::vector<std::uint8_t>& fixed, const Drainage& d, const StreamPower& sp, double dt,
-                       std::vector<double>& c, int threads) {
-  // Cell by cell, on the threads: the uplift, and c = K·dt·A^m (0: a cell
-  // that does not erode). Then, from the outlets up, the implicit heights.
+                       const std::vector<std::uint8_t>& fixed, const Drainage& d, const StreamPower& sp, double dt) {
+  // From the outlets up, each free cell's uplift, then its implicit height
+  // above its receiver (already at its new height).
   const double k = sp.K * dt, lift = rate * dt;
-  const std::int64_t n = static_cast<std::int64_t>(z.size());
-  c.resize(z.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::int64_t i = 0; i < n; ++i) {
-    c[i] = 0.0;
+  for (const std::int32_t i : d.order) {
     if (fixed[i]) continue;
     z[i] += uplift[i] * lift;
-    if (d.to[i] != kOutlet) c[i] = k * area_term(d.area[i], sp);
-  }
-  for (const std::int32_t i : d.order) {
-    if (c[i] == 0.0) continue;
     const std::uint8_t to = d.to[i];
-    z[i] = implicit_height(z[i], z[i + d.offset[to]], c[i], step_length(to) * sp.spacing, sp.n);
+    if (to == kOutlet) continue;
+    const double c = k * area_term(d.area[i], sp);
+    z[i] = implicit_height(z[i], z[i + d.offset[to]], c, step_length(to) * sp.spacing, sp.n);
   }
 }
 

@@ -23,11 +23,8 @@ struct StreamPower {
 // passes over them). uplift × rate: per cell, per unit time. A cell whose
 // receiver rose above it (uplifted faster) only rises: a pit the next
 // step's flood fills.
-// `c`: scratch; the uplift and the cells' factors on `threads` (the same
-// bits for any count), the heights in Drainage::order.
 void stream_power_step(std::vector<double>& z, const std::vector<double>& uplift, double rate,
-                       const std::vector<std::uint8_t>& fixed, const Drainage& d, const StreamPower& sp, double dt,
-                       std::vector<double>& c, int threads);
+                       const std::vector<std::uint8_t>& fixed, const Drainage& d, const StreamPower& sp, double dt);
 
 // The erodibility at which the steady state of this network (uplift equal
 // to erosion everywhere: each free cell (U / (K·A^m))^(1/n) per unit length
