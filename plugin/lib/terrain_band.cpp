@@ -220,7 +220,7 @@ void make_terrain(GDALRasterBand& target, GDALRasterBand* sketch, const TerrainO
   synthesize(c, params, sub_progress(progress, 0.1, made));
   if (erosion.steps != 0) {
     const ErosionReport r = erode(c, erosion, sub_progress(progress, made, 0.9));
-    CPLDebug("MCMD", "erosion: %d grids, %d steps on the coarser ones (network %s), %d on the finest (%.1f %% of its "
+    CPLDebug("MCMD", "erosion: %d grids, %d steps on the coarsest (network %s), %d on the finest (%.1f %% of its "
              "channels moved in its last step), K %.4g", r.grids, r.coarse_steps, r.converged ? "converged" : "not converged",
              r.steps, 100.0 * r.moved, r.K);
   }

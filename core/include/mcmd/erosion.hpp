@@ -51,7 +51,7 @@ constexpr int kMaxErodeSteps = 10000;
 struct ErosionReport {
   int grids = 0;           // grids of the coarse-to-fine pyramid
   int steps = 0;           // steps on the finest grid
-  int coarse_steps = 0;    // steps on the coarser grids
+  int coarse_steps = 0;    // steps on the coarsest grid (the grids between are not eroded)
   bool converged = false;  // the coarsest grid's network (the valleys' layout) stopped changing
   double moved = 1.0;      // share of the finest grid's receivers that changed in its last step
   double K = 0.0;          // the erodibility used

@@ -17,8 +17,14 @@ namespace {
 constexpr double kMovedChannels = 0.03, kReliefTolerance = 0.01;
 constexpr double kChannel = 100.0;
 // A grid's hillslopes are at least this many of its cells long: each grid
-// resolves the valleys of its own scale, the finer grids the finer ones.
+// resolves the valleys of its own scale, the finest grid the smallest.
 constexpr double kGridHillslope = 2.0;
+// Creep D = kCreep·K·ℓ² (× the user's factor): a little under the balance
+// at ℓ leaves more of the smallest valleys. At 1025² from scratch, three
+// seeds: 0.8 keeps all eight realism measures in the real range on each
+// (drainage density 0.59 -> 0.61, spectral exponent 3.55 -> 3.35 against
+// 1); 0.6 made the slopes steeper than any real crop's.
+constexpr double kCreep = 0.8;
 
 double moved_share(const std::vector<std::uint8_t>& before, const Drainage& d, double spacing) {
   if (before.size() != d.to.size()) return 1.0;
@@ -70,11 +76,11 @@ GridRun evolve(std::vector<double>& z, const ErosionGrid& g, Evolution& e, int m
     else keep_draining(z, g.fixed, g.guides, d, scratch);
     if (sp.K == 0.0) e.K = sp.K = steady_state_erodibility(g.initial, g.uplift, g.fixed, d, sp);
     if (!(sp.K > 0.0)) break;  // no relief to keep: nothing erodes
-    // A step of `courant` cells² of diffusion on this grid: D·dt = courant·spacing².
+    // A step of `courant` cells² of diffusion on this grid: K·ℓ²·dt = courant·spacing².
     const double ell = std::max(e.hillslope, kGridHillslope * g.spacing);
     const double dt = e.courant * g.spacing * g.spacing / (sp.K * ell * ell);
     stream_power_step(z, g.uplift, e.rate, g.fixed, d, sp, dt);
-    diffuse(z, g.fixed, g.w, g.h, e.courant * e.diffusion, e.threads);
+    diffuse(z, g.fixed, g.w, g.h, e.courant * kCreep * e.diffusion, e.threads);
     if (e.talus > 0) limit_slopes(z, g.fixed, g.w, g.h, e.talus * g.spacing);
     ++run.steps;
     run.moved = moved_share(previous, d, g.spacing);
