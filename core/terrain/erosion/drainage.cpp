@@ -5,6 +5,8 @@
 #include <bit>
 #include <cmath>
 
+#include "morphology/flow.hpp"
+
 namespace mcmd::terrain {
 
 namespace {
@@ -24,11 +26,6 @@ double next_above(double v) {
   if (v == 0.0) return 4.9406564584124654e-324;
   const auto b = std::bit_cast<std::uint64_t>(v);
   return std::bit_cast<double>(v > 0 ? b + 1 : b - 1);
-}
-
-bool on_border(std::int32_t i, int w, int h) {
-  const int x = i % w, y = i / w;
-  return x == 0 || y == 0 || x == w - 1 || y == h - 1;
 }
 
 // The set bits of an 8-bit mask (std::popcount is a library call without
@@ -172,33 +169,11 @@ void route(Drainage& d, const WaterGuides& guides, DrainageScratch& s) {
 
 void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides, int w, int h,
            Drainage& d, DrainageScratch& s) {
-  constexpr std::uint8_t kBorder = 2;  // marked, and on the border
-  const std::size_t n = z.size();
   d.w = w, d.h = h;
   d.offset = offsets(w);
-  d.level.resize(n);
-  s.mark.assign(n, 0);
-  s.heap.clear();
-  for (std::int32_t i = 0; i < static_cast<std::int32_t>(n); ++i)
-    if (on_border(i, w, h)) s.mark[i] = kBorder, d.level[i] = z[i], s.heap.push(z[i], i);
-  const auto& off = d.offset;
-  while (!s.heap.empty()) {
-    const auto [lv, i] = s.heap.pop();
-    const double above = next_above(lv);
-    const bool edge = s.mark[i] == kBorder;  // its neighbours need bounds tests
-    for (int k = 0; k < 8; ++k) {
-      if (edge) {
-        const int x = i % w + kDx[k], y = i / w + kDy[k];
-        if (x < 0 || y < 0 || x >= w || y >= h) continue;
-      }
-      const std::int32_t j = i + off[k];
-      if (s.mark[j]) continue;
-      s.mark[j] = 1;
-      d.level[j] = std::max(z[j], above);
-      s.heap.push(d.level[j], j);
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i)
+  const std::vector<morph::FlowCell> land(z.size(), morph::FlowCell::land);
+  d.level = morph::flood_levels(z.data(), w, h, land.data());
+  for (std::size_t i = 0; i < z.size(); ++i)
     if (!fixed[i]) z[i] = d.level[i];
   route(d, guides, s);
 }

@@ -16,7 +16,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "morphology/radix_heap.hpp"
 
 namespace mcmd::terrain {
 
@@ -44,16 +43,14 @@ struct Drainage {
 
 // Scratch reused from step to step.
 struct DrainageScratch {
-  morph::RadixHeap heap;
-  std::vector<std::uint8_t> mark;
   std::vector<std::uint8_t> count;
   std::vector<std::int32_t> stack;
 };
 
-// Fill every depression of z (Priority-Flood with ε from the border: each
-// cell ends strictly above the cell that reached it) into d.level, raise the
-// free cells of z to it (a fixed cell keeps its height, water passes over
-// it), then route(). Pre: z finite, w, h >= 3.
+// Fill every depression of z (morph::flood_levels, Priority-Flood with ε
+// from the border: each cell ends strictly above the cell that reached it)
+// into d.level, raise the free cells of z to it (a fixed cell keeps its
+// height, water passes over it), then route(). Pre: z finite, w, h >= 3.
 void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides, int w, int h,
            Drainage& d, DrainageScratch& scratch);
 
