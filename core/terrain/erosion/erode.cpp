@@ -6,7 +6,6 @@
 #include <string>
 
 #include "mcmd/erosion.hpp"
-#include "morphology/flow.hpp"
 #include "terrain/erosion/evolve.hpp"
 #include "terrain/erosion/line_guard.hpp"
 #include "terrain/erosion/margin.hpp"
@@ -74,22 +73,17 @@ ErosionGrid finest(const Canvas& c, const ErosionParams& p) {
   return g;
 }
 
-std::vector<double> flooded(const std::vector<double>& z, int w, int h) {
-  const std::vector<morph::FlowCell> land(z.size(), morph::FlowCell::land);
-  return morph::flood_levels(z.data(), w, h, land.data());
-}
-
 // The uplift pattern, scaled to a mean of 1 over the free cells.
-// `filled`: the uneroded terrain flooded.
-std::vector<double> uplift_of(const ErosionGrid& g, const std::vector<double>& filled, const ErosionParams& p) {
+std::vector<double> uplift_of(const ErosionGrid& g, const ErosionParams& p) {
   std::vector<double> u(g.initial.size(), 1.0);
   if (p.uplift == UpliftPattern::map) u = p.uplift_map;
   if (p.uplift == UpliftPattern::terrain) {
-    // The height of the filled terrain above its lowest cell, with a floor
+    // The height of the uneroded terrain above its lowest cell, with a floor
     // so that no free cell is left without uplift (it would stay flat).
-    const auto [lo, hi] = std::minmax_element(filled.begin(), filled.end());
+    const std::vector<double>& z = g.initial;
+    const auto [lo, hi] = std::minmax_element(z.begin(), z.end());
     const double range = *hi > *lo ? *hi - *lo : 1.0;
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = 0.1 + (filled[i] - *lo) / range;
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = 0.1 + (z[i] - *lo) / range;
   }
   double sum = 0.0;
   std::size_t free = 0;
@@ -168,8 +162,7 @@ ErosionReport erode_all(Canvas& canvas, int margin, const ErosionParams& p, cons
   ErosionReport out;
   std::vector<ErosionGrid> grids{finest(canvas, p)};
   grids[0].margin = margin;
-  const std::vector<double> filled = flooded(grids[0].initial, grids[0].w, grids[0].h);
-  grids[0].uplift = uplift_of(grids[0], filled, p);
+  grids[0].uplift = uplift_of(grids[0], p);
   while (std::max(grids.back().w, grids.back().h) > terrain::kCoarsestSide) grids.push_back(terrain::coarser(grids.back()));
   out.grids = static_cast<int>(grids.size());
 
@@ -178,7 +171,7 @@ ErosionReport erode_all(Canvas& canvas, int margin, const ErosionParams& p, cons
   e.m = p.m, e.n = p.n;
   // With K automatic the relief of the uneroded terrain is held; a given K
   // lets the relief follow from it and the uplift.
-  if (p.K == 0.0) e.relief = terrain::relief(filled, grids[0]);
+  if (p.K == 0.0) e.relief = terrain::relief(grids[0].initial, grids[0]);
   e.hillslope = kHillslopeLength / p.cell_size;
   e.diffusion = p.diffusion;
   e.talus = p.talus >= 90 ? 0.0 : std::tan(p.talus * M_PI / 180.0);
