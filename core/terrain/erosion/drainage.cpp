@@ -126,8 +126,8 @@ void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std
   const std::size_t n = d.level.size();
   d.area.assign(n, 1.0f);
   for (std::size_t i = 0; i < source.size(); ++i) d.area[i] += static_cast<float>(source[i]);
-  d.order.clear();
-  d.order.reserve(n);
+  d.order.resize(n);
+  std::size_t taken = n;  // the order is filled from its end: outlets first
   stack.clear();
   double share[8];
   for (std::size_t seed = 0; seed < n; ++seed) {
@@ -137,7 +137,7 @@ void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std
       const std::int32_t i = stack.back();
       stack.pop_back();
       higher[i] = kTaken;
-      d.order.push_back(i);
+      d.order[--taken] = i;
       const unsigned mask = d.lower[i];
       if (!mask) continue;  // the border (every interior cell has a lower neighbour)
       const double zi = d.level[i];
@@ -157,7 +157,6 @@ void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std
       }
     }
   }
-  std::reverse(d.order.begin(), d.order.end());
 }
 
 void route(Drainage& d, const WaterGuides& guides, DrainageScratch& s) {
