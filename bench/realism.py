@@ -196,6 +196,11 @@ def near_end(value, rng):
     return lo * (1 - 0.1 * math.copysign(1, lo)) <= value <= hi * 1.1
 
 
+def no_farther(a, b, rng):
+    """Whether value a is at most as far from the real range as b (both inside: a tie)."""
+    return distance(a, rng) <= distance(b, rng)
+
+
 def closer(a, b, rng):
     """Whether value a is nearer the real crops than b: by the distance to the range, then, both
     inside, by the distance to the real median."""
@@ -299,11 +304,12 @@ def write_report(crops, ranges, rows, times, repeats, load):
            "Each cell: the value, and in brackets its distance to the real range when outside it. **in**: "
            "measures inside the range or within 10 % of its nearer end; **closer**: measures on which the eroded "
            "terrain is nearer the real crops than the uneroded one (by the distance to the range, then, both "
-           "inside, by the distance to the real median). The default method from scratch and from a skeleton "
+           "inside, by the distance to the real median); **no farther**: measures on which the eroded terrain "
+           "is at most as far from the range as the uneroded one (both inside counts). The default method from scratch and from a skeleton "
            "are medians over three seeds (each measure's median; in brackets how many measures each seed has "
            "in range); the other rows are one terrain each.", "",
-           "| terrain | erosion | " + " | ".join(["slope W₁"] + [label for _, label, _ in SCALARS]) + " | in | closer |",
-           "|---|---|" + "---|" * (len(MEASURES) + 2)]
+           "| terrain | erosion | " + " | ".join(["slope W₁"] + [label for _, label, _ in SCALARS]) + " | in | closer | no farther |",
+           "|---|---|" + "---|" * (len(MEASURES) + 3)]
     for name, label, pair in rows:
         for erode in ("0", "auto"):
             m = pair[erode]
@@ -313,11 +319,13 @@ def write_report(crops, ranges, rows, times, repeats, load):
                 d = distance(m[k], ranges[k])
                 inside += near_end(m[k], ranges[k])
                 cells.append(fmt(k, m[k]) + (f" ({d:.2f})" if d > 0 else ""))
-            better = sum(closer(pair["auto"][k], pair["0"][k], ranges[k]) for k in MEASURES) if erode == "auto" else ""
+            eroded = erode == "auto"
+            better = sum(closer(pair["auto"][k], pair["0"][k], ranges[k]) for k in MEASURES) if eroded else ""
+            kept = sum(no_farther(pair["auto"][k], pair["0"][k], ranges[k]) for k in MEASURES) if eroded else ""
             seeds = m["inside_per_seed"]
             per_seed = f" (seeds: {', '.join(map(str, seeds))})" if len(seeds) > 1 else ""
             md.append(f"| {label} | {'auto' if erode == 'auto' else 'none'} | " + " | ".join(cells)
-                      + f" | {inside}/8{per_seed} | {better}{'/8' if erode == 'auto' else ''} |")
+                      + f" | {inside}/8{per_seed} | {better}{'/8' if eroded else ''} | {kept}{'/8' if eroded else ''} |")
     md += ["", "## Hillshades", "",
            "1025 × 1025 cells of 82 m (84 km across), reduced to 512 pixels, light from the north-west; "
            "left a real crop (the southern Sierra Nevada), then the terrain without and with erosion.", "",

@@ -132,7 +132,7 @@ Erosion (landscape evolution that grows valleys into the terrain; on for
 -point; constraint cells never change, rivers keep draining along their
 course):
   -erode STEPS|auto|0  Steps on the finest grid (default auto: 8, after the
-                   coarser grids' network has converged; 0: none).
+                   coarsest grid's network has converged; 0: none).
   -erosion K,m,n   Stream-power law E = K A^m S^n: K > 0 or auto (default:
                    the uneroded terrain's relief, its 99th percentile, is
                    kept), m in [0, 2], n in [0.5, 4] (default auto,0.5,1):
