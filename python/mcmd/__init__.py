@@ -34,7 +34,19 @@ RuntimeError) when a fill fails (unreadable file, no valid cell, I/O), and
 :class:`mcmd.Cancelled` (an Error) when a progress callback stops it. The GIL
 is released while a fill runs; Ctrl-C stops it cleanly (KeyboardInterrupt).
 """
-from ._file import fill_file
+import os as _os
+
+# Passive OpenMP workers (they sleep as soon as they have no work), as the
+# CLIs default to: libgomp's spinning between the fill's short parallel
+# regions cost small fills 1.5-2.6x the CPU time on a busy machine. libgomp
+# reads this once, when it is loaded: it takes effect only if nothing loaded
+# libgomp before this import (numpy, GDAL and Dask do not), and a value the
+# user set (or a GOMP_SPINCOUNT) wins. docs/python.md, "threads".
+if "GOMP_SPINCOUNT" not in _os.environ:
+    _os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+del _os
+
+from ._file import fill_file  # noqa: E402  (the extension loads libgomp)
 from ._fill import fill
 from ._mcmd import Cancelled, Error
 from ._mcmd import __version__  # the library's MCMDVersion()

@@ -57,3 +57,20 @@ def test_dir_shows_the_api_and_dask_is_imported_on_first_use():
     assert out[0] == str(sorted(["Cancelled", "Error", "__version__", "dask", "fill", "fill_file", "xarray"]))
     assert out[1:3] == ["False False", "True"]
     assert mcmd.fill.__module__ == "mcmd" and mcmd.fill_file.__module__ == "mcmd"
+
+
+def libgomp_settings(**env):
+    """libgomp's settings as it reports them when `import mcmd` loads it."""
+    import subprocess
+    import sys
+    environ = {k: v for k, v in os.environ.items() if k not in ("OMP_WAIT_POLICY", "GOMP_SPINCOUNT")}
+    environ.update(env, OMP_DISPLAY_ENV="verbose")
+    return subprocess.run([sys.executable, "-c", "import mcmd"], capture_output=True, text=True, check=True,
+                          env=environ).stderr
+
+
+def test_openmp_waits_passively_unless_the_user_chose():
+    # Passive is a spin count of 0 (libgomp's own default, 300000, also shows 'PASSIVE').
+    assert "GOMP_SPINCOUNT = '0'" in libgomp_settings()
+    assert "OMP_WAIT_POLICY = 'ACTIVE'" in libgomp_settings(OMP_WAIT_POLICY="active")
+    assert "GOMP_SPINCOUNT = '1000'" in libgomp_settings(GOMP_SPINCOUNT="1000")
