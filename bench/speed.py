@@ -269,6 +269,12 @@ def write_report(a, runs, results, infos, mcmd_msg):
     L.append("Regenerate: `bench/run_speed.sh` (options: `--quick`, `--only NAME`, "
              "`--timeout-gdal S`, `--force`; see bench/README.md).")
     L.append("")
+    loads = sorted(x for r in results.values() if r for x in r.get("loads", []))
+    if loads:
+        L.append(f"The machine is shared: its load average (1 min) when the runs started was "
+                 f"{loads[len(loads) // 2]:.1f} (median; {loads[0]:.1f}–{loads[-1]:.1f}) on "
+                 f"{os.cpu_count()} cores.")
+        L.append("")
     if mcmd_msg:
         L.append(f"**mcmd runs not done:** {mcmd_msg.splitlines()[0]}")
         L.append("")

@@ -543,6 +543,7 @@ def run_timed(cmd: list[str], timeout: float | None = None, env=None,
     with tempfile.NamedTemporaryFile("r", suffix=".time", delete=False) as tf:
         tpath = tf.name
     full = ["/usr/bin/time", "-v", "-o", tpath] + [str(c) for c in cmd]
+    load1 = os.getloadavg()[0]  # how busy the shared machine was: the times move with it
     t0 = time.monotonic()
     p = subprocess.Popen(full, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                          text=True, start_new_session=True, env=env,
@@ -569,7 +570,7 @@ def run_timed(cmd: list[str], timeout: float | None = None, env=None,
     if "wall_s" in res:
         res["time_v_wall_s"] = res.pop("wall_s")
     res["wall_s"] = elapsed
-    res.update({"rc": p.returncode if not timed_out else None,
+    res.update({"rc": p.returncode if not timed_out else None, "load1": load1,
                 "timed_out": timed_out, "timeout_s": timeout, "mem_limit_mb": mem_limit_mb,
                 "cmd": " ".join(str(c) for c in cmd),
                 "stderr": (se or "")[-2000:]})
@@ -914,6 +915,7 @@ def _finish(sp: FillSpec, full_key: str, tries: list[dict], log, mem_limit_mb) -
         r["wall_s"] = float(np.median(walls))
         r["cpu_s"] = float(np.median([cpu(t) for t in tries]))
         r["rss_mb"] = max(t.get("rss_mb", 0) for t in tries)
+    r["loads"] = [t["load1"] for t in tries if "load1" in t]
     r["key"] = full_key
     r["ok"] = (not r["timed_out"]) and r["rc"] == 0 and os.path.exists(sp.out_path)
     if r["ok"]:
