@@ -1,7 +1,6 @@
 #include "morphology/flow.hpp"
 
 #include <array>
-#include <bit>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -26,14 +25,6 @@ void for_each_neighbour(int x, int y, int w, int h, F&& f) {
     const int nx = x + kDx[k], ny = y + kDy[k];
     if (nx >= 0 && ny >= 0 && nx < w && ny < h) f(k, static_cast<std::int32_t>(ny) * w + nx);
   }
-}
-
-// The next double above a finite v: std::nextafter(v, +inf) without its
-// library call.
-double next_above(double v) {
-  if (v == 0.0) return std::numeric_limits<double>::denorm_min();
-  const auto b = std::bit_cast<std::uint64_t>(v);
-  return std::bit_cast<double>(v > 0 ? b + 1 : b - 1);
 }
 
 bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }

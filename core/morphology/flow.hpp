@@ -3,10 +3,20 @@
 // Deterministic: the same field gives the same flow, whatever ran before.
 #pragma once
 
+#include <bit>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace mcmd::morph {
+
+// The next double above a finite v: std::nextafter(v, +inf) without its
+// library call (the ε of the flood; inline: called once per cell).
+inline double next_above(double v) {
+  if (v == 0.0) return std::numeric_limits<double>::denorm_min();
+  const auto b = std::bit_cast<std::uint64_t>(v);
+  return std::bit_cast<double>(v > 0 ? b + 1 : b - 1);
+}
 
 // What a cell is to the flow.
 enum class FlowCell : std::uint8_t {

@@ -22,12 +22,6 @@ constexpr double kInverseLength[8] = {1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQR
 constexpr double kContour[8] = {0.5, 0.3535533905932738, 0.5, 0.3535533905932738,
                                 0.5, 0.3535533905932738, 0.5, 0.3535533905932738};
 
-double next_above(double v) {
-  if (v == 0.0) return 4.9406564584124654e-324;
-  const auto b = std::bit_cast<std::uint64_t>(v);
-  return std::bit_cast<double>(v > 0 ? b + 1 : b - 1);
-}
-
 // The set bits of an 8-bit mask (std::popcount is a library call without
 // the POPCNT instruction, which the portable build does not assume).
 unsigned bits_set(unsigned m) {
@@ -182,7 +176,7 @@ void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixe
   for (const std::int32_t i : d.order) {
     const std::int32_t r = d.receiver(i);
     double v = z[i];
-    if (r >= 0) v = std::max(v, next_above(d.level[r]));
+    if (r >= 0) v = std::max(v, morph::next_above(d.level[r]));
     d.level[i] = v;
     if (!fixed[i]) z[i] = v;
   }

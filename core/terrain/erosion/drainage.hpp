@@ -16,7 +16,6 @@
 #include <cstdint>
 #include <vector>
 
-
 namespace mcmd::terrain {
 
 // What the drawn lines ask of the water (an empty vector: nothing).
