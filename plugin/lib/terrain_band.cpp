@@ -183,6 +183,7 @@ ErosionParams erosion_of(GDALRasterBand& target, bool has_sketch, const TerrainO
   if (e.steps == 0) return e;
   e.threads = threads;
   e.cell_size = cell_side(target);
+  e.texture = o.terrain.method == TerrainMethod::mcmd;
   const int w = target.GetXSize(), h = target.GetYSize();
   if (e.uplift == UpliftPattern::map) e.uplift_map = uplift_map(o.uplift_file, w, h);
   try {

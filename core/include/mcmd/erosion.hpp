@@ -13,7 +13,8 @@
 // It runs coarse to fine: the network converges on a coarse grid, then each
 // finer grid starts from the coarser result plus the initial terrain's own
 // finer detail and needs a few steps only; within a mirrored margin whose
-// border is the outlet. Constraint cells never change: sketch and point
+// border is the outlet. At the end the initial terrain's finest octave,
+// which creep rounded away, is put back (its texture). Constraint cells never change: sketch and point
 // cells are held (water runs over them); ridge cells are divides and river
 // cells carve their valleys, both warped back to their heights at the end,
 // rivers still draining along their course and ridges still crests.
@@ -43,6 +44,10 @@ struct ErosionParams {
   double talus = 90.0;      // angle of repose in degrees, in (0, 90]; 90: none
   double cell_size = 30.0;  // a cell's side in elevation units (slopes and the talus angle need it)
   int threads = 1;          // for the warp back of the drawn lines (the steps run on one); the result does not depend on it
+  // Put the uneroded terrain's finest octave back after the creep that
+  // rounded it (its grain: small pits, no plastic sheen). Off for the paper
+  // methods and MDI, whose finest octave is their subdivision's 2^k lattice.
+  bool texture = true;
 };
 
 constexpr int kErodeAuto = -1;

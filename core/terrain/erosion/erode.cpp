@@ -10,6 +10,7 @@
 #include "terrain/erosion/line_guard.hpp"
 #include "terrain/erosion/margin.hpp"
 #include "terrain/erosion/pyramid.hpp"
+#include "terrain/erosion/texture.hpp"
 #include "thin_plate/thin_plate.hpp"
 
 namespace mcmd {
@@ -204,6 +205,7 @@ ErosionReport erode_all(Canvas& canvas, int margin, const ErosionParams& p, cons
   }
   out.K = e.K;
   if (e.relief > 0) hold_relief(z, grids[0], e.relief);
+  if (p.texture) terrain::restore_texture(z, grids[0]);
   write_back(canvas, z, grids[0], p.cell_size, std::max(1, p.threads));
   return out;
 }

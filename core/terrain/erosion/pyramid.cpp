@@ -80,6 +80,14 @@ ErosionGrid coarser(const ErosionGrid& g) {
   return c;
 }
 
+std::vector<double> restrict_field(const std::vector<double>& field, int w, int h) {
+  const int cw = w / 2 + 1, ch = h / 2 + 1;
+  std::vector<double> out(static_cast<std::size_t>(cw) * ch);
+  for (int Y = 0; Y < ch; ++Y)
+    for (int X = 0; X < cw; ++X) out[static_cast<std::size_t>(Y) * cw + X] = restricted(field, w, h, X, Y);
+  return out;
+}
+
 std::vector<double> prolong(const std::vector<double>& field, int cw, int ch, int w, int h) {
   std::vector<double> rows(static_cast<std::size_t>(w) * ch), out(static_cast<std::size_t>(w) * h);
   for (int Y = 0; Y < ch; ++Y)

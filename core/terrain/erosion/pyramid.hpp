@@ -33,6 +33,9 @@ struct ErosionGrid {
 // in the 3×3 below, the sources below gathered.
 ErosionGrid coarser(const ErosionGrid& g);
 
+// A w×h field on the next coarser grid (w/2+1 × h/2+1), full weighting.
+std::vector<double> restrict_field(const std::vector<double>& field, int w, int h);
+
 // A cw×ch field on the w×h grid below it.
 std::vector<double> prolong(const std::vector<double>& field, int cw, int ch, int w, int h);
 
