@@ -7,12 +7,13 @@ namespace mcmd::terrain {
 
 namespace {
 
-// The finest octave's RMS over the second finest's: 0.5 is the spectrum of
-// a Hurst exponent of 1 carried down to the cell scale. At 1025² × 82 m,
-// three seeds each, closed depressions per km² (real crops 0.12-0.53):
-// 0.45: 0.16-0.40 from scratch, 0.09-0.14 on the skeleton (too few);
-// 0.5: 0.23-0.50 and 0.13-0.18; 0.55: 0.47-0.63 (too many) and 0.17-0.23.
-constexpr double kTextureRatio = 0.5;
+// The finest octave's RMS over the second finest's, measured on the
+// raster's own cells. Real DEMs hold 0.12-0.53 closed depressions (deeper
+// than 1 m) per km²; at 1025² × 82 m, three seeds each, from scratch and
+// around a skeleton: 0.35-0.55 and 0.11-0.15 at 0.4; 0.38-0.62 and
+// 0.12-0.17 at 0.42; 0.42-0.72 and 0.14-0.19 at 0.45 (0.5 is the spectrum
+// of a Hurst exponent of 1: 0.51-0.92 from scratch, too many).
+constexpr double kTextureRatio = 0.4;
 
 struct Octave {
   std::vector<double> coarse;  // the field on the next coarser grid
@@ -42,12 +43,14 @@ Octave finest_octave(const std::vector<double>& v, int w, int h, Free free_cell,
 void restore_texture(std::vector<double>& z, const ErosionGrid& g) {
   const int w = g.w, h = g.h, cw = w / 2 + 1;
   if (w < 5 || h < 5) return;
-  const auto free_fine = [&](std::size_t i) { return !g.fixed[i]; };
-  // A coarse cell counts when the fine cell under it is free.
-  const auto free_coarse = [&](std::size_t i) {
-    const std::size_t X = i % cw, Y = i / cw;
-    return !g.fixed[2 * Y * static_cast<std::size_t>(w) + 2 * X];
+  // The raster's own free cells count (not the margin, whose outlets
+  // hold a lip); a coarse cell when the fine cell under it counts.
+  const auto counts = [&](int x, int y) {
+    const bool own = x >= g.margin && y >= g.margin && x < w - g.margin && y < h - g.margin;
+    return own && !g.fixed[static_cast<std::size_t>(y) * w + x];
   };
+  const auto free_fine = [&](std::size_t i) { return counts(static_cast<int>(i % w), static_cast<int>(i / w)); };
+  const auto free_coarse = [&](std::size_t i) { return counts(2 * static_cast<int>(i % cw), 2 * static_cast<int>(i / cw)); };
   const Octave eroded = finest_octave(z, w, h, free_fine, nullptr);
   const Octave second = finest_octave(eroded.coarse, cw, h / 2 + 1, free_coarse, nullptr);
   std::vector<double> texture;

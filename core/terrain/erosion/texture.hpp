@@ -13,9 +13,10 @@ namespace mcmd::terrain {
 
 // Adds to the free cells of z (g's finest grid, heights in its cells) the
 // finest octave of g.initial (the detail that the next coarser grid cannot
-// hold), scaled so that z's finest octave ends at kTextureRatio of its
-// second finest (RMS over the free cells). Nothing when the erosion left
-// that much. Pure function of z and g: the same for any thread count.
+// hold), scaled so that z's finest octave ends at 0.4 of its second finest
+// (RMS over the free cells of the raster, its margin aside). Nothing when
+// the erosion left that much. Pure function of z and g: the same for any
+// thread count.
 void restore_texture(std::vector<double>& z, const ErosionGrid& g);
 
 }  // namespace mcmd::terrain
