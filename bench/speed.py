@@ -49,6 +49,7 @@ MID = "ferranti3_sierra_nevada_4801"
 HALF = "srtm1_N48W125_halfvoid_3601"
 # files where -threads 2 is also run and its md5 compared with -threads 1
 DET_CASES = [f"{MID}__blobs", f"{HALF}__real"]
+SMALL_CELLS = 2_000_000  # rasters up to this many cells get --small-repeat rounds
 
 RUNS = {            # name -> extra mcmd args (None = gdal, "floor" = gdal_translate)
     "mcmd": [],
@@ -83,6 +84,9 @@ def parse_args(argv=None):
                     help="skip the -threads 2 md5 and -tile 257 RMSE checks")
     ap.add_argument("--repeat", type=int, default=3,
                     help="runs per fill, interleaved; the median times are reported (3)")
+    ap.add_argument("--small-repeat", type=int, default=11,
+                    help="rounds for the rasters of at most 2 million cells (at least --repeat): "
+                         "their runs take a tenth of a second and vary by a third from run to run (11)")
     ap.add_argument("--rs-repeat", type=int, default=7,
                     help="rounds for the cases whose -rs auto cost is compared with the smooth fill's "
                          "(the mosaics; at least --repeat): a ratio of two noisy times (7)")
@@ -200,7 +204,7 @@ def main(argv=None):
         # ratios then compare runs of the same minutes.
         for (name, _), r in zip(todo, V.cached_fills(
                 specs, run_key, force=a.force, log=log,
-                repeat=max(a.repeat, a.rs_repeat) if any(n == "mcmd-rs-auto" for n, _ in todo) else a.repeat,
+                repeat=rounds(a, w * h, todo),
                 mem_limit_mb=a.mem_limit_mb or None)):
             results[(cid, name)] = r
         for sp in specs:
@@ -209,6 +213,17 @@ def main(argv=None):
     write_report(a, runs, results, infos, None if ok else msg)
     log(f"wrote {a.out} ({time.time() - t_start:.0f} s)")
     return 0
+
+
+def rounds(a, cells, todo):
+    """Interleaved rounds for a case: more on small rasters (noisy tenths of a
+    second) and where the -rs auto cost is compared (a ratio of two times)."""
+    n = a.repeat
+    if cells <= SMALL_CELLS:
+        n = max(n, a.small_repeat)
+    if any(name == "mcmd-rs-auto" for name, _ in todo):
+        n = max(n, a.rs_repeat)
+    return n
 
 
 def hill(src, win, stem):
@@ -282,6 +297,8 @@ def write_report(a, runs, results, infos, mcmd_msg):
              "`mcmd_fillnodata -threads 1`, and by `gdal_fillnodata.py -md max(W,H) -si 2`, and "
              "copied by `gdal_translate` to an uncompressed GeoTIFF (the **floor**: reading and "
              f"writing the file), in {a.repeat} interleaved rounds (the medians are shown; "
+             f"{max(a.repeat, a.small_repeat)} on the rasters of up to 2 million cells, whose runs "
+             "take a tenth of a second and vary by a third from run to run; "
              f"{max(a.repeat, a.rs_repeat)} rounds on the mosaics, whose `-rs auto` time is compared "
              "with the smooth fill's below). "
              "**s** = whole-process wall time, **CPU** = user + system time, **MB** = peak "
