@@ -7,6 +7,7 @@
 #include <queue>
 #include <tuple>
 
+#include "common/d8.hpp"
 #include "morphology/flow.hpp"
 
 namespace mcmd::morph {
@@ -14,8 +15,7 @@ namespace mcmd::morph {
 namespace {
 
 constexpr double kCostSteepness = 8.0;
-constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+using d8::kDx, d8::kDy;
 
 struct Geometry {
   int w, h;

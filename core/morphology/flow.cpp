@@ -6,6 +6,7 @@
 #include <limits>
 #include <utility>
 
+#include "common/d8.hpp"
 #include "common/simd_clones.hpp"
 #include "morphology/radix_heap.hpp"
 
@@ -13,10 +14,7 @@ namespace mcmd::morph {
 
 namespace {
 
-constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-// 1 / the step's length in cells, in that order: a drop over it is its slope.
-constexpr double kPerStep[8] = {1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2};
+using d8::kDx, d8::kDy, d8::kPerStep;
 
 // Calls f(k, neighbour index) for the neighbours of (x, y) inside the field.
 template <class F>
@@ -29,10 +27,6 @@ void for_each_neighbour(int x, int y, int w, int h, F&& f) {
 
 bool on_border(int x, int y, int w, int h) { return x == 0 || y == 0 || x == w - 1 || y == h - 1; }
 
-// Index offsets of an interior cell's neighbours in a w-wide field, in the
-// order of kDx/kDy (for_each_neighbour's, without its bounds tests).
-std::array<std::int32_t, 8> neighbour_offsets(int w) { return {1, w + 1, w, w - 1, -1, -w - 1, -w, -w + 1}; }
-
 // One Priority-Flood: the heap of reached cells at their own height, and
 // the queue of cells raised to the water level (pits and flats: Barnes et
 // al. 2014's pit queue), taken first in the order they were reached, so
@@ -40,7 +34,7 @@ std::array<std::int32_t, 8> neighbour_offsets(int w) { return {1, w + 1, w, w - 
 class Flood {
  public:
   Flood(const double* z, int w, int h, const FlowCell* kind)
-      : z_(z), w_(w), h_(h), offset_(neighbour_offsets(w)), level_(cells(), std::numeric_limits<double>::quiet_NaN()),
+      : z_(z), w_(w), h_(h), offset_(d8::offsets(w)), level_(cells(), std::numeric_limits<double>::quiet_NaN()),
         done_(cells()) {
     // One byte per cell for the neighbour tests, most of which find a cell
     // already reached (or not land): kReached, and kBorder on the field's
@@ -154,7 +148,7 @@ struct ReceiverRow {
 MCMD_AVX2_CLONES
 void interior_receivers(std::int32_t* receiver, std::int32_t first, int w, const FlowCell* kind, const double* level,
                         ReceiverRow& row) {
-  const std::array<std::int32_t, 8> offset = neighbour_offsets(w);
+  const std::array<std::int32_t, 8> offset = d8::offsets(w);
   const int n = w - 2;
   row.steepest.assign(static_cast<std::size_t>(n), 0.0);
   row.best.assign(static_cast<std::size_t>(n), -1);

@@ -5,18 +5,14 @@
 #include <bit>
 #include <cmath>
 
+#include "common/d8.hpp"
 #include "morphology/flow.hpp"
 
 namespace mcmd::terrain {
 
 namespace {
 
-// The neighbours, clockwise from the east: steps, index offsets of an
-// interior cell, and the inverse of their lengths.
-constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-std::array<std::int32_t, 8> offsets(int w) { return {1, w + 1, w, w - 1, -1, -w - 1, -w, -w + 1}; }
-constexpr double kInverseLength[8] = {1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2, 1.0, M_SQRT1_2};
+using d8::kDx, d8::kDy;
 // The width of flow through each side of a cell (Quinn et al. 1991's
 // contour lengths: ½ across a side, √2/4 across a corner).
 constexpr double kContour[8] = {0.5, 0.3535533905932738, 0.5, 0.3535533905932738,
@@ -60,7 +56,7 @@ void receivers(Drainage& d, const std::vector<std::uint8_t>& divide, std::vector
       double s[8];
       unsigned mask = 0, above = 0;  // lower and higher neighbours
       for (int k = 0; k < 8; ++k) {
-        s[k] = (zi - d.level[i + off[k]]) * kInverseLength[k];
+        s[k] = (zi - d.level[i + off[k]]) * d8::kPerStep[k];
         mask |= static_cast<unsigned>(s[k] > 0) << k;
         above |= static_cast<unsigned>(s[k] < 0) << k;
       }
@@ -138,7 +134,7 @@ void spread_area(Drainage& d, const std::vector<double>& source, std::vector<std
       double total = 0.0;
       for (unsigned b = mask; b; b &= b - 1) {
         const int j = std::countr_zero(b);
-        const double slope = (zi - d.level[i + off[j]]) * kInverseLength[j];
+        const double slope = (zi - d.level[i + off[j]]) * d8::kPerStep[j];
         share[j] = slope * slope * kContour[j];
         total += share[j];
       }
@@ -163,7 +159,7 @@ void route(Drainage& d, const WaterGuides& guides, DrainageScratch& s) {
 void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides, int w, int h,
            Drainage& d, DrainageScratch& s) {
   d.w = w, d.h = h;
-  d.offset = offsets(w);
+  d.offset = d8::offsets(w);
   const std::vector<morph::FlowCell> land(z.size(), morph::FlowCell::land);
   d.level = morph::flood_levels(z.data(), w, h, land.data());
   for (std::size_t i = 0; i < z.size(); ++i)

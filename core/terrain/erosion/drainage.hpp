@@ -24,7 +24,7 @@ struct WaterGuides {
   std::vector<double> source;        // w·h: drainage area a cell brings besides its own, in its grid's cells (rivers)
 };
 
-// The 8 directions, clockwise from the east: odd ones diagonal.
+// The 8 directions are d8's (common/d8.hpp): clockwise from the east.
 constexpr std::uint8_t kOutlet = 8;  // Drainage::to of a border cell: its water leaves the raster
 
 struct Drainage {
@@ -59,8 +59,5 @@ void flood(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const
 // Pre: d holds last step's drainage of these w×h cells.
 void keep_draining(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, const WaterGuides& guides,
                    Drainage& d, DrainageScratch& scratch);
-
-// The length of a step in direction k, in cells (1 or √2).
-inline double step_length(std::uint8_t k) { return k & 1u ? 1.4142135623730951 : 1.0; }
 
 }  // namespace mcmd::terrain

@@ -1,6 +1,7 @@
 #include "terrain/erosion/hillslope.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 namespace mcmd::terrain {
@@ -63,7 +64,7 @@ void diffuse(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, int
 }
 
 void limit_slopes(std::vector<double>& z, const std::vector<std::uint8_t>& fixed, int w, int h, double slope) {
-  const double diagonal = slope * 1.4142135623730951;
+  const double diagonal = slope * M_SQRT2;
   const auto limit = [&](int x, int y) {
     const std::size_t i = static_cast<std::size_t>(y) * w + x;
     if (fixed[i]) return;

@@ -4,14 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "common/d8.hpp"
+
 namespace mcmd::terrain {
 
 namespace {
 
-constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-
-double step(int k) { return kDx[k] && kDy[k] ? M_SQRT2 : 1.0; }
+using d8::kDx, d8::kDy;
 
 // The slope from river cell (x, y) to its steepest lower river neighbour;
 // 0 when it has none (its end, or a flat step).
@@ -21,7 +20,7 @@ double river_slope(const Canvas& c, int x, int y) {
   for (int k = 0; k < 8; ++k) {
     const int nx = x + kDx[k], ny = y + kDy[k];
     if (!c.contains(nx, ny) || c.state[c.index(nx, ny)] != CellState::river) continue;
-    best = std::max(best, (z - c.z[c.index(nx, ny)]) / step(k));
+    best = std::max(best, (z - c.z[c.index(nx, ny)]) / d8::length(k));
   }
   return best;
 }
@@ -40,7 +39,7 @@ void keep_rivers_draining(Canvas& c) {
         if (!c.contains(nx, ny) || is_constraint(c.state[c.index(nx, ny)])) continue;
         // A free cell no steeper below (x, y) than the river, and a little less.
         double& v = c.z[c.index(nx, ny)];
-        const double floor = c.z[i] - s * step(k);
+        const double floor = c.z[i] - s * d8::length(k);
         // The margin survives a Float32 output.
         const double above = floor + 1e-6 * (1.0 + std::fabs(floor));
         if (v < above) v = above;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/d8.hpp"
+
 namespace mcmd::terrain {
 
 namespace {
@@ -48,7 +50,7 @@ void stream_power_step(std::vector<double>& z, const std::vector<double>& uplift
     const std::uint8_t to = d.to[i];
     if (to == kOutlet) continue;
     const double c = k * area_term(d.area[i], sp);
-    z[i] = implicit_height(z[i], z[i + d.offset[to]], c, step_length(to) * sp.spacing, sp.n);
+    z[i] = implicit_height(z[i], z[i + d.offset[to]], c, d8::length(to) * sp.spacing, sp.n);
   }
 }
 
@@ -67,7 +69,7 @@ double steady_state_erodibility(const std::vector<double>& target, const std::ve
       anchor[i] = target[i];
       continue;
     }
-    const double length = step_length(d.to[i]) * sp.spacing;
+    const double length = d8::length(d.to[i]) * sp.spacing;
     rise[i] = rise[r] + std::pow(uplift[i] / area_term(d.area[i], sp), 1.0 / sp.n) * length;
     anchor[i] = anchor[r];
     steady.push_back(rise[i]);
