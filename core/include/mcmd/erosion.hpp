@@ -14,10 +14,11 @@
 // finer grid starts from the coarser result plus the initial terrain's own
 // finer detail and needs a few steps only; within a mirrored margin whose
 // border is the outlet. At the end the initial terrain's finest octave,
-// which creep rounded away, is put back (its texture). Constraint cells never change: sketch and point
-// cells are held (water runs over them); ridge cells are divides and river
-// cells carve their valleys, both warped back to their heights at the end,
-// rivers still draining along their course and ridges still crests.
+// which creep rounded away, is put back (its texture). Constraint cells
+// never change: sketch and point cells are held (water runs over them);
+// ridge cells are divides and river cells carve their valleys, both warped
+// back to their heights at the end, rivers still draining along their
+// course and ridges still crests.
 #pragma once
 
 #include <vector>
