@@ -255,7 +255,8 @@ double dot_free(const Lattice& lat, const std::vector<double>& a, const std::vec
 
 }  // namespace
 
-int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations, const ProgressFn& progress) {
+int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations, const ProgressFn& progress,
+                         const StructureTerm* extra) {
   if (finest.spans.empty()) return 0;
   const int threads = schedule_.threads;
   const int top = static_cast<int>(coarse_.size()) - 1;
@@ -263,6 +264,7 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations, co
   // r = -A z at the free cells (the problem is A z = 0 with pinned cells fixed).
   std::vector<double> r(cells, 0.0);
   residual(finest, nullptr, r, threads);
+  if (extra) extra->subtract(finest, finest.z, r, threads);
   const double r0 = std::sqrt(dot_free(finest, r, r, threads));
   if (!(r0 > 0)) return 0;
   // Work lattice: the same free cells and springs (the error equation has
@@ -291,6 +293,7 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations, co
     std::swap(work.z, v);
     residual(work, nullptr, out, threads);
     std::swap(work.z, v);
+    if (extra) extra->subtract(work, v, out, threads);
   };
   precondition(r, zv);
   for_spans(work, threads, [&](std::size_t i0, int n) { std::copy_n(zv.begin() + i0, n, p.begin() + i0); });
@@ -313,7 +316,7 @@ int Multigrid::solve_pcg(Lattice& finest, double rel_tol, int max_iterations, co
     });
     ++it;
     report(progress, static_cast<double>(it) / max_iterations);
-    if (std::sqrt(rr) <= rel_tol * r0) break;
+    if (std::sqrt(rr) <= rel_tol * r0 || it == max_iterations) break;  // no V-cycle for a step not taken
     precondition(r, zv);
     // Polak-Ribière β = zᵀ(r - r_old) / rz (the V-cycle is not symmetric),
     // with r - r_old = -α q: no copy of the old residual. zᵀq and the new

@@ -6,6 +6,7 @@
 
 #include "mcmd/progress.hpp"
 #include "thin_plate/lattice.hpp"
+#include "thin_plate/structure_term.hpp"
 
 namespace mcmd {
 
@@ -52,8 +53,11 @@ class Multigrid {
   // order: deterministic.
   // `progress` is told each iteration (it / max_iterations): a cancel stops
   // the solve there (Cancelled).
+  // `extra` (null: none) adds its term to the operator; the V-cycle still
+  // preconditions the thin plate alone.
   // Returns the iterations done.
-  int solve_pcg(Lattice& finest, double rel_tol, int max_iterations, const ProgressFn& progress = {});
+  int solve_pcg(Lattice& finest, double rel_tol, int max_iterations, const ProgressFn& progress = {},
+                const StructureTerm* extra = nullptr);
 
  private:
   void cycle(Lattice& fine, const double* rhs, int k);

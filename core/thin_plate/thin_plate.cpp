@@ -48,6 +48,7 @@
 #include "thin_plate/lattice.hpp"
 #include "thin_plate/multigrid.hpp"
 #include "thin_plate/pull_push.hpp"
+#include "thin_plate/structure_term.hpp"
 
 namespace mcmd {
 
@@ -196,22 +197,39 @@ void attach_pull(Lattice& lat, double pull_length) {
   lat.target = lat.z;
 }
 
-// The PCG tolerance for this field: the looser shallow one when the field is
-// large and every free cell lies within shallow_reach of a constraint (the
-// caller's farthest distance, a Chebyshev bound, or one distance transform,
-// paid only by fields large enough to gain from it; all three decide alike).
-double pcg_tolerance(const Lattice& finest, double farthest, const ThinPlateSchedule& s) {
-  if (s.shallow_pcg_tol <= s.pcg_tol || finest.free_count() < s.shallow_min_free) return s.pcg_tol;
-  if (farthest >= 0) return farthest <= s.shallow_reach ? s.shallow_pcg_tol : s.pcg_tol;
+// Whether the field is shallow: large, with every free cell within
+// shallow_reach of a constraint (the caller's farthest distance, a Chebyshev
+// bound, or one distance transform, paid only by fields large enough to gain
+// from it; all three decide alike).
+bool shallow_field(const Lattice& finest, double farthest, const ThinPlateSchedule& s) {
+  if (finest.free_count() < s.shallow_min_free) return false;
+  if (farthest >= 0) return farthest <= s.shallow_reach;
   // A sufficient test first, a few byte passes: every free cell within r along
   // both axes lies within r·√2 <= shallow_reach (scattered samples, 3.3 % kept).
   const int r = static_cast<int>(std::floor(s.shallow_reach / std::sqrt(2.0)));
-  if (all_within_chebyshev(finest.pinned.data(), finest.w, finest.h, r)) return s.shallow_pcg_tol;
+  if (all_within_chebyshev(finest.pinned.data(), finest.w, finest.h, r)) return true;
   const std::vector<double> dist = distance_to_valid(finest.pinned.data(), finest.w, finest.h);
   for (const Span& sp : finest.spans)
     for (int x = sp.x0; x < sp.x1; ++x)
-      if (dist[finest.index(x, sp.y)] > s.shallow_reach) return s.pcg_tol;
-  return s.shallow_pcg_tol;
+      if (dist[finest.index(x, sp.y)] > s.shallow_reach) return false;
+  return true;
+}
+
+// The finest level's solve: CG to the field's tolerance; on a shallow field
+// the looser shallow one, and the structure term after structure_after
+// iterations (a new Krylov space: the operator changes).
+void solve_finest(Multigrid& mg, Lattice& fine, double farthest, const ThinPlateSchedule& s,
+                  const ProgressFn& progress) {
+  const bool loose = s.shallow_pcg_tol > s.pcg_tol || s.structure_strength > 1.0;
+  const bool shallow = loose && shallow_field(fine, farthest, s);
+  const double tol = shallow ? std::max(s.pcg_tol, s.shallow_pcg_tol) : s.pcg_tol;
+  if (!shallow || !(s.structure_strength > 1.0)) {
+    mg.solve_pcg(fine, tol, s.pcg_max_iterations, progress);
+    return;
+  }
+  mg.solve_pcg(fine, tol, s.structure_after, sub_progress(progress, 0.0, 0.6));
+  const StructureTerm term(fine, s.structure_strength, s.vcycle.threads);
+  mg.solve_pcg(fine, 0.0, s.structure_iterations, sub_progress(progress, 0.6, 1.0), &term);
 }
 
 // The part of the finest lattice its solve touches: the free cells' bounding
@@ -305,8 +323,7 @@ void smooth_fill(const FieldView& field, const Displacement* added, const ThinPl
   if (schedule.pcg_tol <= 0) cycles.coarse_pin = CoarsePin::neighbourhood;  // soft corrections overshoot alone
   Multigrid mg(fine, cycles);
   if (schedule.pcg_tol > 0) {
-    mg.solve_pcg(fine, pcg_tolerance(fine, field.farthest, schedule), schedule.pcg_max_iterations,
-                 sub_progress(progress, 0.4, 0.8));
+    solve_finest(mg, fine, field.farthest, schedule, sub_progress(progress, 0.4, 0.8));
     report(progress, 0.8);
   } else {
     for (int c = 0; c < schedule.v_cycles; ++c) {
