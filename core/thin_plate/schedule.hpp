@@ -49,6 +49,10 @@ struct ThinPlateSchedule {
   // ~1/d⁴), dominant deeper inside large voids, where the converged thin
   // plate extrapolates the rim's slopes too far. 0: plain thin plate.
   double pull_length = 8.0;
+  // A field with at most this many unknown cells (and no tension) is solved
+  // exactly by one dense factorisation instead (direct_plate.hpp): a
+  // raster's hundreds of tiny voids. 0: never.
+  std::size_t direct_max_unknown = 64;
   VCycleSchedule vcycle{};
 };
 

@@ -45,6 +45,7 @@
 #include "roughness/roughness.hpp"
 #include "thin_plate/biharmonic_relax.hpp"
 #include "thin_plate/cubic_prolong.hpp"
+#include "thin_plate/direct_plate.hpp"
 #include "thin_plate/lattice.hpp"
 #include "thin_plate/multigrid.hpp"
 #include "thin_plate/pull_push.hpp"
@@ -271,6 +272,15 @@ Lattice crop(const Lattice& lat, const FreeBox& b) {
   return sub;
 }
 
+// d added to the field's unknown cells (d is 0 outside its box).
+void add_to_unknown(const FieldView& field, const Displacement& d) {
+  for (int y = d.y0; y < d.y0 + d.h; ++y) {
+    const double* v = d.values.data() + static_cast<std::size_t>(y - d.y0) * d.w;
+    for (int x = d.x0; x < d.x0 + d.w; ++x)
+      if (!is_constraint(field.state_at(x, y))) field.z_at(x, y) += v[x - d.x0];
+  }
+}
+
 int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
   long long sweeps = s.finest_sweeps;
   for (int d = 0; d < depth_from_finest && sweeps < s.max_sweeps; ++d) sweeps *= 2;
@@ -282,6 +292,12 @@ int cascade_sweeps(const ThinPlateSchedule& s, int depth_from_finest) {
 void smooth_fill(const FieldView& field, const Displacement* added, const ThinPlateSchedule& schedule,
                  const ProgressFn& progress) {
   if (field.w < 1 || field.h < 1) return;
+  if (schedule.tension == 0.0 &&
+      direct_thin_plate(field.w, field.h, field.z, field.state, schedule.direct_max_unknown)) {
+    if (added) add_to_unknown(field, *added);
+    report(progress, 1.0);
+    return;
+  }
   const Plane ref = field.own_plane ? constraint_plane(field) : Plane{};
   std::vector<Lattice> levels = build_hierarchy(field, ref);
   const int finest = static_cast<int>(levels.size()) - 1;
