@@ -22,7 +22,11 @@
 //     convergence (a looser tolerance for large fields with no cell far from
 //     data), on the thin-plate energy plus a weak pull towards the
 //     cascade's fill: on large blob voids the plain converged thin plate
-//     extends the rim's slopes too far (docs/default-method.md).
+//     extends the rim's slopes too far (docs/default-method.md). Between
+//     scattered samples a structure term (structure_term.cpp) then makes
+//     valleys carry on along their own direction.
+//  A field of at most a few dozen unknown cells skips 1-3: one dense solve
+//  gives its exact thin plate (direct_plate.cpp).
 //  4. Roughness (roughness/): with rs > 0 or rs auto, a constrained
 //     fractal correction is added to the smooth fill in the same solve.
 //
