@@ -4,33 +4,9 @@
 #include <cmath>
 #include <cstddef>
 
+#include "common/box_mean.hpp"
+
 namespace mcmd {
-
-namespace {
-
-// The mean over each cell's 3×3 neighbourhood clipped to the grid, in place.
-// Smooths the tensor over neighbouring blocks: a valley's direction is read
-// over ~12 cells, wider than the gaps between scattered samples.
-void box_mean3(std::vector<double>& a, int w, int h) {
-  std::vector<double> rows(a.size());
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int x0 = std::max(0, x - 1), x1 = std::min(w - 1, x + 1);
-      double s = 0.0;
-      for (int k = x0; k <= x1; ++k) s += a[static_cast<std::size_t>(y) * w + k];
-      rows[static_cast<std::size_t>(y) * w + x] = s / (x1 - x0 + 1);
-    }
-  for (int y = 0; y < h; ++y) {
-    const int y0 = std::max(0, y - 1), y1 = std::min(h - 1, y + 1);
-    for (int x = 0; x < w; ++x) {
-      double s = 0.0;
-      for (int k = y0; k <= y1; ++k) s += rows[static_cast<std::size_t>(k) * w + x];
-      a[static_cast<std::size_t>(y) * w + x] = s / (y1 - y0 + 1);
-    }
-  }
-}
-
-}  // namespace
 
 StructureTerm::StructureTerm(const Lattice& lat, double strength, int threads) : w_(lat.w), h_(lat.h) {
   if (!(strength > 1.0) || w_ < 5 || h_ < 5) return;
@@ -61,8 +37,10 @@ StructureTerm::StructureTerm(const Lattice& lat, double strength, int threads) :
         c[j] += hyy * hyy + hxy * hxy;
       }
   }
+  // Two 3×3 box means over the blocks: a valley's direction is read over ~12
+  // cells, wider than the gaps between scattered samples.
   for (int pass = 0; pass < 2; ++pass)
-    for (std::vector<double>* t : {&a, &b, &c}) box_mean3(*t, blocks_w_, blocks_h);
+    for (std::vector<double>* t : {&a, &b, &c}) box_mean(*t, blocks_w_, blocks_h, 1);
   coef_.assign(blocks, Weights{});
   for (std::size_t j = 0; j < blocks; ++j) {
     const double d = a[j] - c[j], trace = a[j] + c[j];

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "common/box_mean.hpp"
 #include "common/distance.hpp"
 #include "terrain/methods/fbm.hpp"
 
@@ -66,24 +67,6 @@ void add_relief(std::vector<double>& d, const Canvas& c, const TerrainParams& p,
   }
 }
 
-// One pass of a (2r+1)-wide box mean along rows (stride 1) or columns
-// (stride w), shrinking at the borders.
-void box_pass(std::vector<double>& v, int w, int h, int r, bool rows) {
-  const int n = rows ? w : h, lines = rows ? h : w;
-  const std::size_t step = rows ? 1 : static_cast<std::size_t>(w);
-  std::vector<double> line(static_cast<std::size_t>(n)), prefix(static_cast<std::size_t>(n) + 1);
-  for (int l = 0; l < lines; ++l) {
-    const std::size_t base = rows ? static_cast<std::size_t>(l) * w : static_cast<std::size_t>(l);
-    prefix[0] = 0.0;
-    for (int k = 0; k < n; ++k) prefix[k + 1] = prefix[k] + v[base + k * step];
-    for (int k = 0; k < n; ++k) {
-      const int a = std::max(0, k - r), b = std::min(n, k + r + 1);
-      line[k] = (prefix[b] - prefix[a]) / (b - a);
-    }
-    for (int k = 0; k < n; ++k) v[base + k * step] = line[k];
-  }
-}
-
 // The creases away from the lines, blurred: a crease is a function of the
 // distance to the nearest line, which kinks where two lines are equally near
 // (the medial axis: long straight and curved folds in a hillshade). Within a
@@ -93,8 +76,7 @@ void soften(std::vector<double>& crease, const Canvas& c, const std::vector<doub
   std::vector<double> blur = crease;
   const int r = std::max(1, static_cast<int>(std::max(c.w, c.h) / 40));
   for (int pass = 0; pass < 3; ++pass) {  // three box passes: close to a Gaussian of σ ≈ r
-    box_pass(blur, c.w, c.h, r, true);
-    box_pass(blur, c.w, c.h, r, false);
+    box_mean(blur, c.w, c.h, r);
   }
   for (std::size_t i = 0; i < crease.size(); ++i) {
     const double t = -std::expm1(-to_line[i] / kCreaseKept);
