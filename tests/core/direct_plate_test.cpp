@@ -6,18 +6,13 @@
 #include <vector>
 
 #include "thin_plate/direct_plate.hpp"
+#include "test_field.hpp"
 #include "thin_plate/thin_plate.hpp"
 
 namespace {
 
 using mcmd::CellState;
-
-struct Field {
-  int w, h;
-  std::vector<double> z;
-  std::vector<CellState> state;
-  mcmd::FieldView view() { return {w, h, z.data(), state.data()}; }
-};
+using mcmd::test::Field;
 
 // z = f(x, y), unknown where hole(x, y).
 template <class F, class H>

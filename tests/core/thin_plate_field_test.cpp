@@ -7,18 +7,13 @@
 #include <vector>
 
 #include "thin_plate/lattice.hpp"
+#include "test_field.hpp"
 #include "thin_plate/thin_plate.hpp"
 
 namespace {
 
 using mcmd::CellState;
-
-struct Field {
-  int w, h;
-  std::vector<double> z;
-  std::vector<CellState> state;
-  mcmd::FieldView view() { return {w, h, z.data(), state.data()}; }
-};
+using mcmd::test::Field;
 
 // z = f(x, y) everywhere, a random fraction `keep` known, plus an unknown disc.
 template <class F>
